@@ -1,0 +1,80 @@
+// The deterministic 2D world simulator (ROS-free facade).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mrt_sim/sensors.h"
+#include "mrt_sim/world.h"
+
+namespace mrt::sim {
+
+/// Outputs of one robot's sensors, filled when the sensor's period elapses
+/// (the `*_ready` flag is set for that step only).
+struct MiceSample {
+  std::string left_id, right_id;
+  int left_dx = 0, left_dy = 0, right_dx = 0, right_dy = 0;
+  bool left_fault = false, right_fault = false;  // a fault was injected since the last sample
+};
+
+struct RobotState {
+  RobotConfig config;
+  Pose2D pose;                      // ground truth in the world frame
+  Twist2D twist;                    // body twist applied during the last step
+  std::vector<double> wheel_setpoint;  // rad/s, as commanded
+  std::vector<double> wheel_speed;     // rad/s, after saturation
+  std::vector<double> wheel_angle;     // rad, integrated
+  std::vector<std::int64_t> ticks;     // encoder ticks (floor of angle * ticks_per_rev / 2pi)
+  bool saturated = false;
+  bool bumped = false;              // the last step was blocked by a collision
+
+  bool mice_ready = false;
+  MiceSample mice;
+  bool encoders_ready = false;
+  bool sonar_ready = false;
+  std::vector<double> sonar;        // m, one per sonar
+  bool vision_ready = false;
+  std::vector<SeenObject> vision;   // noisy
+  bool dgps_ready = false;
+  Point2D dgps;                     // noisy position in the world frame
+};
+
+class Simulator {
+ public:
+  /// `dt` is the integration step in seconds (default 1 ms).
+  explicit Simulator(World world, double dt = 0.001);
+
+  double time() const { return time_; }
+  double dt() const { return dt_; }
+  const World& world() const { return world_; }
+  std::vector<RobotState>& robots() { return robots_; }
+  const std::vector<RobotState>& robots() const { return robots_; }
+  /// Index of the robot named `name`; throws std::out_of_range if none.
+  std::size_t robot_index(const std::string& name) const;
+
+  /// Sets the wheel speed set-points (rad/s, base wheel order; throws
+  /// std::invalid_argument on a size mismatch).
+  void set_wheel_speeds(std::size_t robot, const std::vector<double>& w);
+  /// Convenience: converts a body twist to wheel set-points.
+  void set_twist(std::size_t robot, const Twist2D& t);
+
+  /// Advances the world by one step: moves robots along exact constant-twist
+  /// arcs (wheel speeds saturated preserving direction), stops a robot whose
+  /// step would collide, moves movers and the ball, then updates every
+  /// sensor whose period has elapsed.
+  void step();
+
+ private:
+  World world_;
+  double dt_;
+  double time_ = 0.0;
+  std::uint64_t steps_ = 0;
+  std::vector<RobotState> robots_;
+  std::vector<std::vector<MouseModel>> mice_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace mrt::sim

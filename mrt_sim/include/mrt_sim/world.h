@@ -1,0 +1,135 @@
+// The simulated world: static geometry, dynamic objects and robots, loaded
+// from a YAML file (ROS-free).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mrt_common/pose2d.h"
+#include "mrt_sim/kinematics.h"
+
+namespace mrt::sim {
+
+using mrt::common::Point2D;
+using mrt::common::Pose2D;
+
+/// A straight segment. Walls block motion, sonar and vision; painted field
+/// lines block nothing and are seen by vision as line points.
+struct Segment {
+  Point2D a, b;
+};
+
+/// A static cylinder: a coloured landmark post, a goal post, a tree, a
+/// parked-car approximation. Blocks motion, sonar and vision.
+struct Post {
+  std::string name;
+  std::string membership_class;  // "Landmark", "GoalPost", "Obstacle", ...
+  std::string color;             // symbolic colour seen by vision ("" if none)
+  Point2D center;
+  double radius = 0.1;
+};
+
+/// A goal of the field: seen by vision as one object at its mouth centre;
+/// its three sides (back and two sides) are walls.
+struct Goal {
+  std::string name;
+  std::string color;
+  Pose2D pose;         // mouth centre, theta pointing into the goal
+  double width = 2.0;  // m
+  double depth = 0.5;  // m
+};
+
+/// The ball: a cylinder rolling with constant deceleration `friction`
+/// (m/s^2) until it stops; pushed by robots and bounced by walls with
+/// restitution `restitution`.
+struct Ball {
+  std::string name = "ball";
+  Point2D position;
+  Point2D velocity;
+  double radius = 0.11;
+  double friction = 0.4;
+  double restitution = 0.6;
+  bool enabled = false;
+};
+
+/// A walking person or a scripted robot: a cylinder moving along waypoints
+/// at constant speed (looping if `loop`, else stopping at the last one).
+struct Mover {
+  std::string name;
+  std::string membership_class;  // "Person" or "Robot"
+  std::string color;
+  double radius = 0.25;
+  double speed = 0.8;
+  bool loop = true;
+  std::vector<Point2D> waypoints;
+  // state
+  Point2D position;
+  std::size_t next = 1;
+};
+
+struct MouseConfig {
+  std::string id;             // "left", "right"
+  Pose2D mount;               // pose of the mouse frame in base_link
+  double counts_per_m = 15748.0;  // 400 cpi
+  double noise = 0.0;         // std-dev of a multiplicative length noise per step
+  double fault_rate = 0.0;    // probability per step of losing contact (manual §4.2)
+  double fault_max_fraction = 0.5;  // a fault loses up to this fraction of the step's length
+};
+
+struct SonarConfig {
+  Pose2D mount;               // in base_link, x along the beam axis
+  double fov = 0.4;           // full cone angle, rad
+  double min_range = 0.1;     // m
+  double max_range = 5.0;     // m
+};
+
+struct SensorsConfig {
+  double rate_mice = 50.0;      // Hz, 0 = off
+  std::vector<MouseConfig> mice;
+  double rate_encoders = 50.0;  // Hz, 0 = off
+  int ticks_per_rev = 2000;     // encoder ticks per wheel revolution
+  double rate_sonar = 10.0;     // Hz, 0 = off
+  std::vector<SonarConfig> sonars;
+  double sonar_noise = 0.01;    // m, std-dev
+  double rate_vision = 10.0;    // Hz, 0 = off
+  double vision_range = 6.0;    // m
+  double vision_distance_noise = 0.02;  // relative: sigma = noise * distance
+  double vision_bearing_noise = 0.01;   // rad
+  double line_point_spacing = 0.25;     // m between sampled field-line points
+  double rate_dgps = 0.0;       // Hz, 0 = off
+  double dgps_noise = 0.05;     // m, std-dev per axis
+  double datum_latitude = 45.478;   // deg, world origin (for NavSatFix)
+  double datum_longitude = 9.227;   // deg
+};
+
+struct RobotConfig {
+  std::string name;           // namespace and frame prefix
+  BaseGeometry base;
+  Pose2D initial_pose;
+  SensorsConfig sensors;
+};
+
+struct World {
+  std::string name;
+  std::string file;                     // where it was loaded from
+  double min_x = -10, min_y = -10, max_x = 10, max_y = 10;  // bounds, m
+  std::vector<Segment> walls;
+  std::vector<Segment> field_lines;
+  std::vector<Post> posts;
+  std::vector<Goal> goals;
+  Ball ball;
+  std::vector<Mover> movers;
+  std::vector<RobotConfig> robots;
+  std::uint64_t seed = 1;
+};
+
+/// Loads a world file. Throws mrt::common::ParseError naming the file, the
+/// line (and column) of the offending node and what was expected. The
+/// format is documented in mrt_sim/README.md.
+World load_world(const std::string& path);
+
+/// Same, from YAML text; `file` is used in error messages.
+World parse_world(const std::string& yaml_text, const std::string& file);
+
+}  // namespace mrt::sim
