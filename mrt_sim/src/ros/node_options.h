@@ -1,0 +1,41 @@
+// Parameters of sim_node, read once at start-up into a validated struct.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <ros/node_handle.h>
+
+namespace mrt::sim::node {
+
+/// A bad parameter: what() names it ("~rate_hz: must be > 0, got -3").
+class ParameterError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct NodeOptions {
+  std::string world_file;              // ~world (required)
+  double rate_hz = 1000.0;             // ~rate_hz: physics steps per simulated second
+  double real_time_factor = 1.0;       // ~real_time_factor: sim seconds per wall second
+  bool publish_clock = true;           // ~publish_clock
+  int clock_divider = 1;               // ~clock_divider: /clock every N steps
+  double ground_truth_rate = 100.0;    // ~ground_truth_rate: Hz of ground_truth and its tf
+  double marker_rate = 20.0;           // ~marker_rate: Hz of dynamic_markers
+  double path_rate = 10.0;             // ~path_rate: Hz of ground_truth_path updates
+  int path_length = 1000;              // ~path_length: poses kept in the trail
+  double cmd_timeout = 0.5;            // ~cmd_timeout: sim seconds; 0 disables the watchdog
+  std::string world_frame = "world";   // ~world_frame
+  std::string frame_prefix;            // ~frame_prefix: prepended to every robot frame
+  std::string sensor_parent = "base_link_truth";  // ~sensor_parent: parent of sensor frames
+
+  double dt() const { return 1.0 / rate_hz; }
+  /// Steps between two publications at `rate` Hz (at least 1).
+  long steps_per(double rate) const;
+};
+
+/// Reads and validates the private parameters of `pnh`; throws
+/// ParameterError naming the first bad one.
+NodeOptions load_node_options(const ros::NodeHandle& pnh);
+
+}  // namespace mrt::sim::node

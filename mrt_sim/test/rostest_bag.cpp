@@ -1,0 +1,267 @@
+// rostest of sim_node: records the mice and vision topics of a robot driven
+// straight into a bag (rosbag::Bag, written from this test's
+// subscriptions), reads the bag back with rosbag::View and checks message
+// counts (rate x duration, +-1) and contents: the summed mouse counts equal
+// the ground-truth displacement seen in each mouse's frame (mounts from the
+// static tf), and the percepts name their producer and hold the expected
+// classes with distances that match the ground truth.
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/Twist.h>
+#include <gtest/gtest.h>
+#include <mrt_msgs/MiceReading.h>
+#include <mrt_msgs/Percept.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+namespace {
+
+double yaw_of(const geometry_msgs::Quaternion& q) {
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+}
+
+const mrt_msgs::Attribute* attribute(const mrt_msgs::PerceptObject& o, const std::string& name) {
+  for (const auto& a : o.attributes)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+class BagTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ros::NodeHandle pnh("~");
+    pnh.param("robot", robot_, std::string("robot1"));
+    pnh.param("bag", bag_path_, std::string("/tmp/mrt_sim_bag_test.bag"));
+    pnh.param("duration", duration_, 3.0);
+    pnh.param("speed", speed_, 0.3);
+    pnh.param("rate_mice", rate_mice_, 50.0);
+    pnh.param("rate_vision", rate_vision_, 10.0);
+    pnh.param("counts_per_m", counts_per_m_, 15748.0);
+    std::string classes;
+    pnh.param("expected_classes", classes, std::string("Ball"));
+    expected_classes_ = split(classes);
+    pnh.param("ball_x", ball_x_, 0.0);
+    pnh.param("ball_y", ball_y_, 0.0);
+    ns_ = "/" + robot_ + "/";
+  }
+
+  std::string robot_, bag_path_, ns_;
+  double duration_ = 3.0, speed_ = 0.3, rate_mice_ = 50.0, rate_vision_ = 10.0,
+         counts_per_m_ = 15748.0, ball_x_ = 0.0, ball_y_ = 0.0;
+  std::vector<std::string> expected_classes_;
+};
+
+TEST_F(BagTest, RecordReplayAndCheck) {
+  ros::NodeHandle nh;
+  tf2_ros::Buffer tf_buffer;
+  tf2_ros::TransformListener tf_listener(tf_buffer);
+
+  rosbag::Bag bag(bag_path_, rosbag::bagmode::Write);
+  bool recording = false;
+  std::map<std::string, int> written;
+  std::vector<nav_msgs::Odometry> gt;  // every step, kept in memory for the checks
+  // Messages are written at their sim-time stamp, so the bag's time line is
+  // the simulation's.
+  auto cb_mice = [&](const mrt_msgs::MiceReading::ConstPtr& m) {
+    if (!recording) return;
+    bag.write(ns_ + "mice", m->header.stamp, *m);
+    ++written["mice"];
+  };
+  auto cb_percepts = [&](const mrt_msgs::Percept::ConstPtr& m) {
+    if (!recording) return;
+    bag.write(ns_ + "percepts", m->header.stamp, *m);
+    ++written["percepts"];
+  };
+  auto cb_gt = [&](const nav_msgs::Odometry::ConstPtr& m) { gt.push_back(*m); };
+  ros::Subscriber s1 = nh.subscribe<mrt_msgs::MiceReading>(ns_ + "mice", 1000, cb_mice);
+  ros::Subscriber s2 = nh.subscribe<mrt_msgs::Percept>(ns_ + "percepts", 1000, cb_percepts);
+  ros::Subscriber s3 = nh.subscribe<nav_msgs::Odometry>(ns_ + "ground_truth", 20000, cb_gt,
+                                                        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+  ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>(ns_ + "cmd_vel", 10);
+
+  // Wait for the simulator.
+  ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (ros::ok() && ros::WallTime::now() < give_up &&
+         (gt.empty() || cmd_pub.getNumSubscribers() == 0 || s1.getNumPublishers() == 0 ||
+          s2.getNumPublishers() == 0)) {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  ASSERT_FALSE(gt.empty()) << "no ground truth from sim_node";
+  ASSERT_GT(cmd_pub.getNumSubscribers(), 0u);
+
+  // Drive straight and record; stop after the recording window plus a margin.
+  geometry_msgs::Twist cmd;
+  cmd.linear.x = speed_;
+  recording = true;
+  const double t_begin = gt.back().header.stamp.toSec();
+  give_up = ros::WallTime::now() + ros::WallDuration(60.0);
+  ros::WallTime next_cmd = ros::WallTime::now();
+  while (ros::ok() && ros::WallTime::now() < give_up &&
+         gt.back().header.stamp.toSec() < t_begin + duration_ + 1.0) {
+    if (ros::WallTime::now() >= next_cmd) {
+      cmd_pub.publish(cmd);
+      next_cmd += ros::WallDuration(0.02);
+    }
+    ros::spinOnce();
+    ros::WallDuration(0.001).sleep();
+  }
+  recording = false;
+  cmd_pub.publish(geometry_msgs::Twist());
+  bag.close();
+  ASSERT_GT(written["mice"], 0) << "no mice messages";
+  ASSERT_GT(written["percepts"], 0) << "no percepts";
+
+  // Ground truth by stamp (every step is published).
+  std::map<std::int64_t, nav_msgs::Odometry> gt_at;
+  double heading = 0.0;
+  bool moving_seen = false;
+  for (const auto& m : gt) {
+    gt_at[m.header.stamp.toNSec()] = m;
+    if (m.twist.twist.linear.x != 0.0) {
+      // Straight motion: the heading never changes.
+      if (moving_seen) ASSERT_NEAR(yaw_of(m.pose.pose.orientation), heading, 1e-9);
+      heading = yaw_of(m.pose.pose.orientation);
+      moving_seen = true;
+    }
+  }
+  ASSERT_TRUE(moving_seen) << "the robot never moved";
+
+  // Replay.
+  rosbag::Bag in(bag_path_, rosbag::bagmode::Read);
+  std::vector<mrt_msgs::MiceReading> mice;
+  std::vector<mrt_msgs::Percept> percepts;
+  rosbag::View view(in, rosbag::TopicQuery({ns_ + "mice", ns_ + "percepts"}));
+  for (const rosbag::MessageInstance& mi : view) {
+    if (auto m = mi.instantiate<mrt_msgs::MiceReading>()) {
+      EXPECT_EQ(mi.getTime(), m->header.stamp);
+      mice.push_back(*m);
+    } else if (auto p = mi.instantiate<mrt_msgs::Percept>()) {
+      percepts.push_back(*p);
+    } else {
+      ADD_FAILURE() << "unexpected type " << mi.getDataType() << " on " << mi.getTopic();
+    }
+  }
+  EXPECT_EQ(static_cast<int>(mice.size()), written["mice"]);
+  EXPECT_EQ(static_cast<int>(percepts.size()), written["percepts"]);
+
+  // Window: from the first mouse sample after motion started, for `duration`.
+  std::size_t first = 0;
+  while (first < mice.size() && gt_at.count(mice[first].header.stamp.toNSec()) &&
+         gt_at[mice[first].header.stamp.toNSec()].twist.twist.linear.x == 0.0)
+    ++first;
+  ASSERT_LT(first, mice.size());
+  const ros::Time ta = mice[first].header.stamp;
+  const ros::Time tb = ta + ros::Duration(duration_);
+
+  // Counts: rate x duration within one.
+  rosbag::View mice_window(in, rosbag::TopicQuery(ns_ + "mice"), ta + ros::Duration(1e-6), tb);
+  rosbag::View vision_window(in, rosbag::TopicQuery(ns_ + "percepts"), ta + ros::Duration(1e-6), tb);
+  EXPECT_NEAR(static_cast<double>(mice_window.size()), rate_mice_ * duration_, 1.0);
+  EXPECT_NEAR(static_cast<double>(vision_window.size()), rate_vision_ * duration_, 1.0);
+
+  // Summed mouse counts over (ta, tlast] against the ground-truth displacement.
+  std::map<std::string, std::pair<long, long>> sum;
+  ros::Time tlast = ta;
+  std::string left_frame, right_frame, left_id, right_id;
+  for (const rosbag::MessageInstance& mi : mice_window) {
+    auto m = mi.instantiate<mrt_msgs::MiceReading>();
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->header.frame_id, robot_ + "/base_link_truth");
+    sum[m->left.mouse_id].first += m->left.dx;
+    sum[m->left.mouse_id].second += m->left.dy;
+    sum[m->right.mouse_id].first += m->right.dx;
+    sum[m->right.mouse_id].second += m->right.dy;
+    left_frame = m->left.header.frame_id;
+    right_frame = m->right.header.frame_id;
+    left_id = m->left.mouse_id;
+    right_id = m->right.mouse_id;
+    tlast = m->header.stamp;
+  }
+  ASSERT_TRUE(gt_at.count(ta.toNSec()) && gt_at.count(tlast.toNSec()));
+  const auto& pa = gt_at[ta.toNSec()].pose.pose.position;
+  const auto& pb = gt_at[tlast.toNSec()].pose.pose.position;
+  // Body-frame displacement (pure translation at constant heading).
+  const double dxw = pb.x - pa.x, dyw = pb.y - pa.y;
+  const double bx = std::cos(heading) * dxw + std::sin(heading) * dyw;
+  const double by = -std::sin(heading) * dxw + std::cos(heading) * dyw;
+  EXPECT_NEAR(bx, speed_ * (tlast - ta).toSec(), 1e-6);
+  for (const auto& [frame, id] : {std::make_pair(left_frame, left_id), std::make_pair(right_frame, right_id)}) {
+    geometry_msgs::TransformStamped mount;
+    try {
+      mount = tf_buffer.lookupTransform(robot_ + "/base_link_truth", frame, ros::Time(0), ros::Duration(5.0));
+    } catch (const tf2::TransformException& e) {
+      FAIL() << "no static transform of " << frame << ": " << e.what();
+    }
+    const double phi = yaw_of(mount.transform.rotation);
+    const double ex = counts_per_m_ * (std::cos(phi) * bx + std::sin(phi) * by);
+    const double ey = counts_per_m_ * (-std::sin(phi) * bx + std::cos(phi) * by);
+    std::printf("mouse %s: counts (%ld, %ld), expected (%.1f, %.1f)\n", id.c_str(), sum[id].first,
+                sum[id].second, ex, ey);
+    EXPECT_NEAR(static_cast<double>(sum[id].first), ex, 2.0) << "mouse " << id;
+    EXPECT_NEAR(static_cast<double>(sum[id].second), ey, 2.0) << "mouse " << id;
+  }
+
+  // Percept contents.
+  std::set<std::string> classes;
+  for (const rosbag::MessageInstance& mi : vision_window) {
+    auto p = mi.instantiate<mrt_msgs::Percept>();
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->sensor, "omnivision");
+    EXPECT_EQ(p->robot, robot_);
+    EXPECT_EQ(p->header.frame_id, robot_ + "/base_link_truth");
+    EXPECT_FALSE(p->objects.empty());
+    ASSERT_TRUE(gt_at.count(p->header.stamp.toNSec())) << "percept stamp is not a step's stamp";
+    const auto& pose = gt_at[p->header.stamp.toNSec()].pose.pose;
+    for (const auto& o : p->objects) {
+      classes.insert(o.membership_class);
+      const mrt_msgs::Attribute* d = attribute(o, "distance");
+      const mrt_msgs::Attribute* b = attribute(o, "bearing");
+      ASSERT_TRUE(d && b) << o.name << " lacks distance or bearing";
+      EXPECT_TRUE(d->symbol.empty());
+      EXPECT_GE(d->value, 0.0);
+      EXPECT_LE(std::fabs(b->value), M_PI + 1e-9);
+      if (o.membership_class == "Ball") {
+        const mrt_msgs::Attribute* c = attribute(o, "color");
+        ASSERT_TRUE(c) << "the ball has no color";
+        EXPECT_FALSE(c->symbol.empty());
+        const double true_d = std::hypot(ball_x_ - pose.position.x, ball_y_ - pose.position.y);
+        const double true_b = std::remainder(
+            std::atan2(ball_y_ - pose.position.y, ball_x_ - pose.position.x) - yaw_of(pose.orientation), 2 * M_PI);
+        // Within five standard deviations of the vision noise.
+        EXPECT_NEAR(d->value, true_d, 5.0 * d->variability + 1e-6);
+        EXPECT_NEAR(std::remainder(b->value - true_b, 2 * M_PI), 0.0, 5.0 * b->variability + 1e-6);
+      }
+    }
+  }
+  for (const auto& c : expected_classes_) EXPECT_TRUE(classes.count(c)) << "no object of class " << c;
+  std::printf("bag: %zu mice and %zu percept messages in %.1f s\n", static_cast<std::size_t>(mice_window.size()),
+              static_cast<std::size_t>(vision_window.size()), duration_);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "bag_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
