@@ -4,6 +4,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mrt_sim/world.h"
@@ -67,6 +68,7 @@ struct OtherRobot {
   std::string name;
   Point2D center;
   double radius;
+  std::string color = "black";
 };
 std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherRobot>& others,
                                         const Pose2D& robot, const SensorsConfig& cfg);

@@ -48,6 +48,7 @@ class Simulator {
   explicit Simulator(World world, double dt = 0.001);
 
   double time() const { return time_; }
+  std::uint64_t steps() const { return steps_; }
   double dt() const { return dt_; }
   const World& world() const { return world_; }
   std::vector<RobotState>& robots() { return robots_; }
@@ -67,13 +68,24 @@ class Simulator {
   /// sensor whose period has elapsed.
   void step();
 
+  /// Steps between two firings of a sensor of rate `hz` (0 when off):
+  /// max(1, round(1 / (hz * dt))).
+  std::uint64_t period(double hz) const;
+
  private:
+  bool blocked(std::size_t robot, const Pose2D& from, const Pose2D& to) const;
+  void move_movers();
+  void move_ball();
+  void update_sensors(std::size_t robot);
+
   World world_;
   double dt_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   std::vector<RobotState> robots_;
   std::vector<std::vector<MouseModel>> mice_;
+  std::vector<std::vector<bool>> mice_fault_;  // a fault since the last sample
+  std::vector<Segment> solid_;                 // walls and goal walls
   std::mt19937_64 rng_;
 };
 

@@ -2,6 +2,7 @@
 // from a YAML file (ROS-free).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,6 +51,7 @@ struct Ball {
   double radius = 0.11;
   double friction = 0.4;
   double restitution = 0.6;
+  std::string color = "orange";
   bool enabled = false;
 };
 
@@ -64,8 +66,10 @@ struct Mover {
   bool loop = true;
   std::vector<Point2D> waypoints;
   // state
-  Point2D position;
-  std::size_t next = 1;
+  Point2D position;     // starts at waypoints[0]
+  Point2D velocity;     // m/s, during the last step
+  std::size_t next = 1; // index of the waypoint being walked to
+  bool done = false;    // reached the last waypoint of an open path
 };
 
 struct MouseConfig {
@@ -105,6 +109,7 @@ struct SensorsConfig {
 
 struct RobotConfig {
   std::string name;           // namespace and frame prefix
+  std::string color = "black";  // seen by the other robots' vision
   BaseGeometry base;
   Pose2D initial_pose;
   SensorsConfig sensors;
@@ -123,6 +128,20 @@ struct World {
   std::vector<RobotConfig> robots;
   std::uint64_t seed = 1;
 };
+
+/// The three walls of a goal (back and two sides; the mouth is open), in
+/// the world frame.
+std::array<Segment, 3> goal_walls(const Goal& g);
+
+/// The two goal posts at the ends of the mouth: [left, right] as seen from
+/// the field looking into the goal.
+std::array<Point2D, 2> goal_posts(const Goal& g);
+
+/// Every segment that blocks motion, sonar and vision: walls and goal walls.
+std::vector<Segment> solid_segments(const World& w);
+
+/// Distance from `p` to the closest point of `s`; that point in `closest`.
+double distance_to_segment(const Point2D& p, const Segment& s, Point2D* closest = nullptr);
 
 /// Loads a world file. Throws mrt::common::ParseError naming the file, the
 /// line (and column) of the offending node and what was expected. The

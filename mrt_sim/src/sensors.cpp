@@ -1,0 +1,222 @@
+// Sensor models: optical mice, sonar cones, omnidirectional vision.
+#include "mrt_sim/sensors.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mrt_common/angle.h"
+
+namespace mrt::sim {
+
+using mrt::common::normalize_angle;
+
+namespace {
+
+double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+// Distance along the unit ray (o, d) to segment s, or +inf.
+double ray_segment(const Point2D& o, double dx, double dy, const Segment& s) {
+  const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
+  const double denom = cross(dx, dy, ex, ey);
+  if (std::fabs(denom) < 1e-15) return INFINITY;  // parallel: a grazing ray sees nothing
+  const double ax = s.a.x - o.x, ay = s.a.y - o.y;
+  const double t = cross(ax, ay, ex, ey) / denom;
+  const double u = cross(ax, ay, dx, dy) / denom;
+  return (t >= 0.0 && u >= 0.0 && u <= 1.0) ? t : INFINITY;
+}
+
+// Distance along the unit ray (o, d) to circle c; 0 when o is inside it.
+double ray_circle(const Point2D& o, double dx, double dy, const Circle& c) {
+  const double ox = c.center.x - o.x, oy = c.center.y - o.y;
+  const double c2 = ox * ox + oy * oy - c.radius * c.radius;
+  if (c2 <= 0.0) return 0.0;
+  const double b = ox * dx + oy * dy;
+  const double disc = b * b - c2;
+  if (b <= 0.0 || disc < 0.0) return INFINITY;
+  return b - std::sqrt(disc);
+}
+
+// The world's cylinders (posts, ball, movers) plus `extra`.
+std::vector<Circle> world_circles(const World& w, const std::vector<Circle>& extra) {
+  std::vector<Circle> out;
+  out.reserve(w.posts.size() + w.movers.size() + extra.size() + 1);
+  for (const Post& p : w.posts) out.push_back({p.center, p.radius});
+  if (w.ball.enabled) out.push_back({w.ball.position, w.ball.radius});
+  for (const Mover& m : w.movers) out.push_back({m.position, m.radius});
+  out.insert(out.end(), extra.begin(), extra.end());
+  return out;
+}
+
+// Distance from o to the part of segment s inside the wedge of unit
+// directions between `right` and `left` (< 180 degrees wide) around `mid`.
+double wedge_segment(const Point2D& o, const Point2D& right, const Point2D& left, const Point2D& mid,
+                     const Segment& s) {
+  // Clip p(t) = a + t (b - a) against f(p) >= 0 for three linear forms.
+  const double ax = s.a.x - o.x, ay = s.a.y - o.y, bx = s.b.x - o.x, by = s.b.y - o.y;
+  double t0 = 0.0, t1 = 1.0;
+  auto clip = [&](double fa, double fb) {
+    if (fa < 0.0 && fb < 0.0) return false;
+    if (fa < 0.0) t0 = std::max(t0, fa / (fa - fb));
+    if (fb < 0.0) t1 = std::min(t1, fa / (fa - fb));
+    return t0 <= t1;
+  };
+  if (!clip(cross(right.x, right.y, ax, ay), cross(right.x, right.y, bx, by)) ||
+      !clip(-cross(left.x, left.y, ax, ay), -cross(left.x, left.y, bx, by)) ||
+      !clip(mid.x * ax + mid.y * ay, mid.x * bx + mid.y * by))
+    return INFINITY;
+  const Segment part{{s.a.x + t0 * (s.b.x - s.a.x), s.a.y + t0 * (s.b.y - s.a.y)},
+                     {s.a.x + t1 * (s.b.x - s.a.x), s.a.y + t1 * (s.b.y - s.a.y)}};
+  return distance_to_segment(o, part);
+}
+
+// True if segment p-q crosses segment s.
+bool segments_cross(const Point2D& p, const Point2D& q, const Segment& s) {
+  const double rx = q.x - p.x, ry = q.y - p.y, ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
+  const double denom = cross(rx, ry, ex, ey);
+  if (std::fabs(denom) < 1e-15) return false;
+  const double ax = s.a.x - p.x, ay = s.a.y - p.y;
+  const double t = cross(ax, ay, ex, ey) / denom, u = cross(ax, ay, rx, ry) / denom;
+  return t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0;
+}
+
+}  // namespace
+
+Point2D mouse_displacement(const Pose2D& mount, const Twist2D& t, double dt) {
+  // Velocity of the mouse point in the body frame, constant under a constant twist.
+  const double ux = t.vx - t.omega * mount.y, uy = t.vy + t.omega * mount.x;
+  const double c = std::cos(mount.theta), s = std::sin(mount.theta);
+  return {dt * (c * ux + s * uy), dt * (-s * ux + c * uy)};
+}
+
+bool MouseModel::step(const Twist2D& t, double dt, std::mt19937_64& rng) {
+  const Point2D d = mouse_displacement(cfg_.mount, t, dt);
+  double scale = cfg_.counts_per_m;
+  if (cfg_.noise > 0.0) scale *= std::max(0.0, 1.0 + cfg_.noise * std::normal_distribution<double>()(rng));
+  bool fault = false;
+  if (cfg_.fault_rate > 0.0 && std::uniform_real_distribution<double>()(rng) < cfg_.fault_rate) {
+    const double u = 1.0 - std::uniform_real_distribution<double>()(rng);  // (0, 1]
+    scale *= 1.0 - u * cfg_.fault_max_fraction;
+    fault = true;
+  }
+  acc_x_ += d.x * scale;
+  acc_y_ += d.y * scale;
+  // Move whole counts out, keeping the remainder; the 1e-9 count tolerance
+  // absorbs rounding of sums such as 100 x 0.3.
+  const double wx = std::trunc(acc_x_ + std::copysign(1e-9, acc_x_));
+  const double wy = std::trunc(acc_y_ + std::copysign(1e-9, acc_y_));
+  out_x_ += static_cast<int>(wx);
+  out_y_ += static_cast<int>(wy);
+  acc_x_ -= wx;
+  acc_y_ -= wy;
+  return fault;
+}
+
+void MouseModel::read(int& dx, int& dy) {
+  dx = out_x_;
+  dy = out_y_;
+  out_x_ = out_y_ = 0;
+}
+
+std::optional<double> ray_cast(const World& w, const std::vector<Circle>& extra, Point2D origin,
+                               double angle, double max_range) {
+  const double dx = std::cos(angle), dy = std::sin(angle);
+  double best = INFINITY;
+  for (const Segment& s : w.walls) best = std::min(best, ray_segment(origin, dx, dy, s));
+  for (const Goal& g : w.goals)
+    for (const Segment& s : goal_walls(g)) best = std::min(best, ray_segment(origin, dx, dy, s));
+  for (const Post& p : w.posts) best = std::min(best, ray_circle(origin, dx, dy, {p.center, p.radius}));
+  if (w.ball.enabled) best = std::min(best, ray_circle(origin, dx, dy, {w.ball.position, w.ball.radius}));
+  for (const Mover& m : w.movers) best = std::min(best, ray_circle(origin, dx, dy, {m.position, m.radius}));
+  for (const Circle& c : extra) best = std::min(best, ray_circle(origin, dx, dy, c));
+  if (best > max_range) return std::nullopt;
+  return best;
+}
+
+double sonar_range(const World& w, const std::vector<Circle>& extra, const Pose2D& robot,
+                   const SonarConfig& s) {
+  const Point2D o = robot.transform({s.mount.x, s.mount.y});
+  const double heading = robot.theta + s.mount.theta, half = 0.5 * s.fov;
+  double best;
+  if (half < 1e-9) {
+    best = ray_cast(w, extra, o, heading, s.max_range).value_or(INFINITY);
+  } else {
+    // The nearest echo in the cone is the nearest point of any object inside
+    // the cone: nothing can hide it, since an occluder would be nearer.
+    const Point2D mid{std::cos(heading), std::sin(heading)};
+    const Point2D right{std::cos(heading - half), std::sin(heading - half)};
+    const Point2D left{std::cos(heading + half), std::sin(heading + half)};
+    best = INFINITY;
+    for (const Segment& seg : solid_segments(w)) best = std::min(best, wedge_segment(o, right, left, mid, seg));
+    for (const Circle& c : world_circles(w, extra)) {
+      const double cx = c.center.x - o.x, cy = c.center.y - o.y, dist = std::hypot(cx, cy);
+      if (dist <= c.radius) {
+        best = 0.0;
+      } else if (std::fabs(normalize_angle(std::atan2(cy, cx) - heading)) <= half) {
+        best = std::min(best, dist - c.radius);  // the closest point faces the sonar
+      } else {  // otherwise the nearest point in the cone lies on one of its edges
+        best = std::min({best, ray_circle(o, right.x, right.y, c), ray_circle(o, left.x, left.y, c)});
+      }
+    }
+  }
+  return std::min(s.max_range, std::max(s.min_range, best));
+}
+
+std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherRobot>& others,
+                                        const Pose2D& robot, const SensorsConfig& cfg) {
+  const std::vector<Segment> solid = solid_segments(w);
+  std::vector<Circle> cylinders;  // occluders; index matches `skip` below
+  for (const Post& p : w.posts) cylinders.push_back({p.center, p.radius});
+  const std::size_t ball_index = cylinders.size();
+  if (w.ball.enabled) cylinders.push_back({w.ball.position, w.ball.radius});
+  const std::size_t movers_index = cylinders.size();
+  for (const Mover& m : w.movers) cylinders.push_back({m.position, m.radius});
+  const std::size_t others_index = cylinders.size();
+  for (const OtherRobot& r : others) cylinders.push_back({r.center, r.radius});
+
+  const Point2D eye{robot.x, robot.y};
+  std::vector<SeenObject> out;
+  // Adds the object at `p` if in range and the line of sight to it crosses
+  // no wall and no cylinder but its own (`skip`).
+  auto see = [&](const Point2D& p, std::size_t skip, const std::string& name, const std::string& cls,
+                 const std::string& color) {
+    const double dx = p.x - eye.x, dy = p.y - eye.y, dist = std::hypot(dx, dy);
+    if (dist > cfg.vision_range || dist < 1e-9) return;
+    // Stop the sight line 1 um short so a target on a wall's end is visible.
+    const double k = (dist - 1e-6) / dist;
+    const Point2D q{eye.x + k * dx, eye.y + k * dy};
+    for (const Segment& s : solid)
+      if (segments_cross(eye, q, s)) return;
+    for (std::size_t i = 0; i < cylinders.size(); ++i)
+      if (i != skip && distance_to_segment(cylinders[i].center, Segment{eye, q}) < cylinders[i].radius) return;
+    out.push_back({name, cls, color, dist, normalize_angle(std::atan2(dy, dx) - robot.theta)});
+  };
+  const std::size_t none = cylinders.size();
+
+  for (std::size_t i = 0; i < w.posts.size(); ++i)
+    see(w.posts[i].center, i, w.posts[i].name, w.posts[i].membership_class, w.posts[i].color);
+  for (const Goal& g : w.goals) {
+    see({g.pose.x, g.pose.y}, none, g.name, "Goal", g.color);
+    const auto posts = goal_posts(g);
+    see(posts[0], none, g.name + "_left", "GoalPost", g.color);
+    see(posts[1], none, g.name + "_right", "GoalPost", g.color);
+  }
+  if (w.ball.enabled) see(w.ball.position, ball_index, w.ball.name, "Ball", w.ball.color);
+  for (std::size_t i = 0; i < w.movers.size(); ++i)
+    see(w.movers[i].position, movers_index + i, w.movers[i].name, w.movers[i].membership_class,
+        w.movers[i].color);
+  for (std::size_t i = 0; i < others.size(); ++i)
+    see(others[i].center, others_index + i, others[i].name, "Robot", others[i].color);
+  // Field lines: points at the middles of equal pieces about
+  // line_point_spacing long, fixed in the world so they can be matched.
+  for (const Segment& l : w.field_lines) {
+    const double len = std::hypot(l.b.x - l.a.x, l.b.y - l.a.y);
+    const long n = std::max(1L, std::lround(len / cfg.line_point_spacing));
+    for (long j = 0; j < n; ++j) {
+      const double t = (j + 0.5) / n;
+      see({l.a.x + t * (l.b.x - l.a.x), l.a.y + t * (l.b.y - l.a.y)}, none, "line", "Line", "white");
+    }
+  }
+  return out;
+}
+
+}  // namespace mrt::sim
