@@ -8,6 +8,7 @@
 // a message stamped t must show the pose reached after exactly t - t0 of
 // constant-twist motion.
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <geometry_msgs/Twist.h>
@@ -142,8 +143,11 @@ TEST_F(ArcTest, ConstantTwistFollowsAnalyticArc) {
   }
   EXPECT_NEAR(last_t, duration, dt() + 1e-9);
   EXPECT_EQ(checked, static_cast<std::size_t>(std::lround(duration * rate_hz_)));
-  RecordProperty("max_position_error_m", std::to_string(max_err));
-  RecordProperty("max_heading_error_rad", std::to_string(max_heading_err));
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", max_err);
+  RecordProperty("max_position_error_m", buf);
+  std::snprintf(buf, sizeof buf, "%.3g", max_heading_err);
+  RecordProperty("max_heading_error_rad", buf);
   std::printf("arc: %zu poses over %.3f s, max position error %.3g m, max heading error %.3g rad\n",
               checked, last_t, max_err, max_heading_err);
 }

@@ -138,7 +138,9 @@ TEST_F(BagTest, RecordReplayAndCheck) {
     gt_at[m.header.stamp.toNSec()] = m;
     if (m.twist.twist.linear.x != 0.0) {
       // Straight motion: the heading never changes.
-      if (moving_seen) ASSERT_NEAR(yaw_of(m.pose.pose.orientation), heading, 1e-9);
+      if (moving_seen) {
+        ASSERT_NEAR(yaw_of(m.pose.pose.orientation), heading, 1e-9);
+      }
       heading = yaw_of(m.pose.pose.orientation);
       moving_seen = true;
     }
