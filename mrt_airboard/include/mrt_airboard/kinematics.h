@@ -1,0 +1,135 @@
+// Kinematics of the AIRLab robot bases: the processing sub-module of
+// AIRBoard (manual chapter 5, section 2.1). ROS-free.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mrt::airboard {
+
+/// Body-frame velocity (REP-103): vx forward, vy left (m/s), omega
+/// counter-clockwise (rad/s).
+struct Twist2D {
+  double vx = 0.0;
+  double vy = 0.0;
+  double omega = 0.0;
+};
+
+enum class BaseType { kDifferential, kOmni };
+
+/// Geometry and limits of one base, validated by validate().
+///
+/// Differential: wheels [left, right], `track` apart; positive wheel speed
+/// drives the robot forward.
+/// Omni: wheel i sits at `wheel_angles[i]` (rad, from the body x axis) at
+/// `wheel_distance` from the centre and drives along (-sin a, cos a): its
+/// angular speed is w_i = (-sin(a) vx + cos(a) vy + L omega) / r (the
+/// convention of mrt_sim and of mrt_msgs/WheelCommand).
+struct BaseParams {
+  std::string name = "ianus3";
+  BaseType type = BaseType::kDifferential;
+  double wheel_radius = 0.05;          // m
+  double track = 0.38;                 // m, differential only
+  double wheel_distance = 0.20;        // m, omni only
+  std::vector<double> wheel_angles;    // rad, omni only
+  double max_wheel_speed = 24.0;       // rad/s, saturation (0 = none)
+  double max_wheel_accel = 0.0;        // rad/s^2, acceleration limit (0 = none)
+  double deadband_linear = 0.0;        // m/s: |v| below it is zeroed
+  double deadband_angular = 0.0;       // rad/s: |omega| below it is zeroed
+  int counts_per_rev = 8192;           // encoder counts per wheel revolution
+
+  std::size_t wheel_count() const {
+    return type == BaseType::kDifferential ? 2 : wheel_angles.size();
+  }
+  /// Throws std::invalid_argument naming the offending parameter.
+  void validate() const;
+};
+
+/// The presets of the manual's robots: "ianus3" (differential, r 0.05 m,
+/// track 0.38 m, 1.2 m/s), "triskar" (three omni wheels at 90/210/330 deg),
+/// "omni4" (four omni wheels at 45/135/225/315 deg). Same geometry as
+/// mrt_sim's presets. Throws std::invalid_argument for an unknown name.
+BaseParams base_preset(const std::string& name);
+
+/// Parses "differential" / "omni".
+BaseType parse_base_type(const std::string& s);
+
+/// Inverse (twist -> wheel angular speeds) and forward (wheel speeds ->
+/// twist) kinematics of one base.
+class BaseKinematics {
+ public:
+  virtual ~BaseKinematics() = default;
+  virtual std::size_t wheel_count() const = 0;
+  /// Wheel angular speeds (rad/s) realising `t`.
+  virtual std::vector<double> inverse(const Twist2D& t) const = 0;
+  /// Body twist from wheel angular speeds (rad/s); least squares when the
+  /// base has more wheels than degrees of freedom. Throws
+  /// std::invalid_argument on a size mismatch.
+  virtual Twist2D forward(const std::vector<double>& w) const = 0;
+  /// Whether the base can move sideways (vy).
+  virtual bool holonomic() const = 0;
+};
+
+class DifferentialKinematics : public BaseKinematics {
+ public:
+  DifferentialKinematics(double wheel_radius, double track);
+  std::size_t wheel_count() const override { return 2; }
+  std::vector<double> inverse(const Twist2D& t) const override;  // ignores vy
+  Twist2D forward(const std::vector<double>& w) const override;
+  bool holonomic() const override { return false; }
+
+ private:
+  double r_, track_;
+};
+
+class OmniKinematics : public BaseKinematics {
+ public:
+  /// Needs at least three wheels whose directions span the plane.
+  OmniKinematics(double wheel_radius, double wheel_distance, std::vector<double> wheel_angles);
+  std::size_t wheel_count() const override { return angles_.size(); }
+  std::vector<double> inverse(const Twist2D& t) const override;
+  Twist2D forward(const std::vector<double>& w) const override;
+  bool holonomic() const override { return true; }
+
+ private:
+  double r_, dist_;
+  std::vector<double> angles_;
+  std::vector<double> pinv_;  // 3 x n pseudo-inverse of the n x 3 Jacobian, row major
+};
+
+std::unique_ptr<BaseKinematics> make_kinematics(const BaseParams& p);
+
+/// Scales the whole vector so that no |w_i| exceeds `max_abs`, keeping the
+/// direction of motion. Returns the scale applied (1 when nothing changed).
+double saturate_preserving_direction(std::vector<double>& w, double max_abs);
+
+/// Turns a requested twist into wheel set-points: dead-band on the twist,
+/// inverse kinematics, saturation that preserves the direction of motion,
+/// and an acceleration limit that also scales the whole change vector (so a
+/// ramp keeps the direction of motion too).
+class VelocityLimiter {
+ public:
+  explicit VelocityLimiter(const BaseParams& p);
+
+  struct Result {
+    std::vector<double> wheels;  // set-points, rad/s
+    bool saturated = false;      // the speed limit scaled the request
+    bool accel_limited = false;  // the acceleration limit scaled the change
+  };
+
+  /// `dt` is the time since the previous call (s); ignored for the first
+  /// call and when the acceleration limit is 0.
+  Result update(const Twist2D& requested, double dt);
+  /// Forgets the previous set-points (e.g. after the link was lost: the
+  /// motors are considered stopped).
+  void reset();
+  const BaseKinematics& kinematics() const { return *kin_; }
+
+ private:
+  BaseParams p_;
+  std::unique_ptr<BaseKinematics> kin_;
+  std::vector<double> last_;
+};
+
+}  // namespace mrt::airboard

@@ -1,0 +1,61 @@
+// The firmware model served on a pseudo-terminal in real time: what the
+// airboard_emulator program and the latency benchmark run. ROS-free.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "mrt_airboard/firmware.h"
+
+namespace mrt::airboard {
+
+/// Line faults, applied to bytes crossing the emulated cable.
+struct LineFaults {
+  double corrupt_rx = 0.0;    // probability that a PC -> board byte gets one bit flipped
+  double corrupt_tx = 0.0;    // same, board -> PC
+  double cut_rx_after = -1.0; // s of board time after which PC -> board bytes are lost (< 0: never)
+  uint32_t seed = 1;
+};
+
+struct EmulatorStats {
+  uint64_t bytes_in = 0, bytes_out = 0, bytes_dropped_out = 0;
+  uint64_t bytes_corrupted_in = 0, bytes_corrupted_out = 0, bytes_cut_in = 0;
+  uint64_t late_ticks = 0;  // control periods run late (catch-up)
+};
+
+class PtyEmulator {
+ public:
+  /// Opens a pty pair in raw mode; when `link_path` is not empty, makes it a
+  /// symlink to the slave (replacing a stale symlink). Throws
+  /// std::runtime_error on failure.
+  PtyEmulator(const FirmwareConfig& fw, const LineFaults& faults, std::string link_path);
+  ~PtyEmulator();  // closes the pty and removes the symlink
+  PtyEmulator(const PtyEmulator&) = delete;
+  PtyEmulator& operator=(const PtyEmulator&) = delete;
+
+  const std::string& slave_path() const { return slave_path_; }
+  /// Serves the board until `stop` becomes true: input is handled as soon as
+  /// it arrives, step() runs every 1 ms of wall time (late periods catch up).
+  void run(const std::atomic<bool>& stop);
+
+  /// Only between runs.
+  const Firmware& firmware() const { return fw_; }
+  const EmulatorStats& stats() const { return stats_; }
+
+ private:
+  void flush();
+  void corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count);
+
+  Firmware fw_;
+  LineFaults faults_;
+  std::string link_path_;
+  std::string slave_path_;
+  int master_ = -1;
+  int slave_ = -1;
+  std::mt19937 rng_;
+  EmulatorStats stats_;
+};
+
+}  // namespace mrt::airboard

@@ -1,0 +1,85 @@
+// airboard_emulator: the AIRBoard firmware model on a pseudo-terminal.
+// ROS-free; runnable as a plain program or as a <node> in a launch file
+// (arguments starting with "__" are ignored).
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "mrt_airboard/pty_emulator.h"
+
+namespace {
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+void usage() {
+  std::cerr <<
+      "usage: airboard_emulator [options]\n"
+      "  --link PATH           create PATH as a symlink to the pty slave (give it to the node's ~port)\n"
+      "  --motors N            motors on the board, 1..4 (default 2)\n"
+      "  --cpr N               encoder counts per wheel revolution (default 8192)\n"
+      "  --max-speed W         set-point clamp, rad/s (default 30)\n"
+      "  --no-load-speed W     wheel speed at 100 % duty, rad/s (default 38)\n"
+      "  --tau S               motor time constant, s (default 0.02)\n"
+      "  --watchdog-ms MS      watchdog delay (default 100)\n"
+      "  --corrupt-rate P      flip one bit in a fraction P of the PC->board bytes\n"
+      "  --corrupt-tx-rate P   same for board->PC bytes\n"
+      "  --cut-rx-after S      lose every PC->board byte after S s of board time\n"
+      "  --seed N              seed of the fault generator (default 1)\n"
+      "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
+      "prints its statistics on stderr.\n";
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  mrt::airboard::FirmwareConfig fw;
+  mrt::airboard::LineFaults faults;
+  std::string link;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a.rfind("__", 0) == 0) continue;  // roslaunch remappings (__name:=, __log:=)
+      auto val = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "--link") link = val();
+      else if (a == "--motors") fw.motors = std::stoi(val());
+      else if (a == "--cpr") fw.counts_per_rev = static_cast<uint32_t>(std::stoul(val()));
+      else if (a == "--max-speed") fw.max_speed = std::stod(val());
+      else if (a == "--no-load-speed") fw.no_load_speed = std::stod(val());
+      else if (a == "--tau") fw.tau = std::stod(val());
+      else if (a == "--watchdog-ms") fw.watchdog_ms = static_cast<uint16_t>(std::stoi(val()));
+      else if (a == "--corrupt-rate") faults.corrupt_rx = std::stod(val());
+      else if (a == "--corrupt-tx-rate") faults.corrupt_tx = std::stod(val());
+      else if (a == "--cut-rx-after") faults.cut_rx_after = std::stod(val());
+      else if (a == "--seed") faults.seed = static_cast<uint32_t>(std::stoul(val()));
+      else if (a == "-h" || a == "--help") { usage(); return 0; }
+      else throw std::invalid_argument("unknown option " + a);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "airboard_emulator: " << e.what() << "\n";
+    usage();
+    return 2;
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  std::signal(SIGHUP, on_signal);
+  try {
+    mrt::airboard::PtyEmulator emu(fw, faults, link);
+    std::cout << "pty: " << emu.slave_path() << std::endl;
+    emu.run(g_stop);
+    const auto& s = emu.stats();
+    const auto& f = emu.firmware();
+    std::cerr << "airboard_emulator: " << f.time_ms() << " ms served, " << f.commands_applied()
+              << " commands applied, " << f.commands_rejected() << " rejected, " << f.rx_stats().frames_bad()
+              << " bad frames, " << f.watchdog_trips() << " watchdog trips, " << s.bytes_in << " bytes in ("
+              << s.bytes_corrupted_in << " corrupted, " << s.bytes_cut_in << " cut), " << s.bytes_out
+              << " bytes out (" << s.bytes_dropped_out << " dropped), " << s.late_ticks << " late ticks\n";
+  } catch (const std::exception& e) {
+    std::cerr << "airboard_emulator: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,327 @@
+#include "mrt_airboard/protocol.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace mrt::airboard {
+
+uint16_t crc16_ccitt(const uint8_t* data, std::size_t n, uint16_t crc) {
+  for (std::size_t i = 0; i < n; ++i) {
+    crc ^= static_cast<uint16_t>(data[i]) << 8;
+    for (int b = 0; b < 8; ++b)
+      crc = (crc & 0x8000) ? static_cast<uint16_t>((crc << 1) ^ 0x1021) : static_cast<uint16_t>(crc << 1);
+  }
+  return crc;
+}
+
+void append_frame(std::vector<uint8_t>& out, const Frame& f) {
+  if (f.payload.size() > proto::kMaxPayload)
+    throw std::invalid_argument("append_frame: payload of " + std::to_string(f.payload.size()) +
+                                " bytes exceeds " + std::to_string(proto::kMaxPayload));
+  const std::size_t at = out.size();
+  out.push_back(proto::kStart);
+  out.push_back(static_cast<uint8_t>(f.payload.size()));
+  out.push_back(f.type);
+  out.push_back(f.seq);
+  out.insert(out.end(), f.payload.begin(), f.payload.end());
+  const uint16_t crc = crc16_ccitt(out.data() + at + 1, f.payload.size() + 3);
+  out.push_back(static_cast<uint8_t>(crc & 0xFF));
+  out.push_back(static_cast<uint8_t>(crc >> 8));
+}
+
+std::vector<uint8_t> encode_frame(const Frame& f) {
+  std::vector<uint8_t> out;
+  out.reserve(f.payload.size() + proto::kOverhead);
+  append_frame(out, f);
+  return out;
+}
+
+// ---------------------------------------------------------------- decoder
+
+void FrameDecoder::drop(std::size_t k) {
+  if (k >= len_) {
+    len_ = 0;
+    return;
+  }
+  std::memmove(buf_, buf_ + k, len_ - k);
+  len_ -= k;
+}
+
+void FrameDecoder::feed(const uint8_t* data, std::size_t n,
+                        const std::function<void(const Frame&)>& on_frame) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (len_ == 0) {
+      // Fast skip of garbage between frames.
+      const void* p = std::memchr(data + i, proto::kStart, n - i);
+      if (!p) {
+        stats_.bytes_skipped += n - i;
+        return;
+      }
+      const std::size_t j = static_cast<std::size_t>(static_cast<const uint8_t*>(p) - data);
+      stats_.bytes_skipped += j - i;
+      i = j;
+    }
+    buf_[len_++] = data[i];
+    parse(on_frame);
+  }
+}
+
+void FrameDecoder::parse(const std::function<void(const Frame&)>& on_frame) {
+  while (len_ > 0) {
+    if (buf_[0] != proto::kStart) {
+      std::size_t k = 1;
+      while (k < len_ && buf_[k] != proto::kStart) ++k;
+      stats_.bytes_skipped += k;
+      drop(k);
+      continue;
+    }
+    if (len_ < 2) return;
+    const std::size_t plen = buf_[1];
+    if (plen > proto::kMaxPayload) {
+      ++stats_.length_errors;
+      drop(1);
+      continue;
+    }
+    const std::size_t total = plen + proto::kOverhead;
+    if (len_ < total) return;
+    const uint16_t want = crc16_ccitt(buf_ + 1, plen + 3);
+    const uint16_t got = static_cast<uint16_t>(buf_[total - 2] | (buf_[total - 1] << 8));
+    if (want != got) {
+      ++stats_.crc_errors;
+      drop(1);
+      continue;
+    }
+    ++stats_.frames_ok;
+    scratch_.type = buf_[2];
+    scratch_.seq = buf_[3];
+    scratch_.payload.assign(buf_ + 4, buf_ + 4 + plen);
+    drop(total);
+    on_frame(scratch_);
+  }
+}
+
+// ---------------------------------------------------------------- fixed point
+
+namespace {
+
+template <typename T>
+T round_sat(double v) {
+  if (std::isnan(v)) return 0;
+  const double r = std::round(v);
+  if (r >= static_cast<double>(std::numeric_limits<T>::max())) return std::numeric_limits<T>::max();
+  if (r <= static_cast<double>(std::numeric_limits<T>::min())) return std::numeric_limits<T>::min();
+  return static_cast<T>(r);
+}
+
+struct Writer {
+  std::vector<uint8_t>& b;
+  void u8(uint8_t v) { b.push_back(v); }
+  void u16(uint16_t v) {
+    b.push_back(static_cast<uint8_t>(v));
+    b.push_back(static_cast<uint8_t>(v >> 8));
+  }
+  void u32(uint32_t v) {
+    for (int i = 0; i < 4; ++i) b.push_back(static_cast<uint8_t>(v >> (8 * i)));
+  }
+  void i16(int16_t v) { u16(static_cast<uint16_t>(v)); }
+  void i32(int32_t v) { u32(static_cast<uint32_t>(v)); }
+};
+
+struct Reader {
+  const std::vector<uint8_t>& b;
+  std::size_t at = 0;
+  uint8_t u8() { return b[at++]; }
+  uint16_t u16() {
+    const uint16_t v = static_cast<uint16_t>(b[at] | (b[at + 1] << 8));
+    at += 2;
+    return v;
+  }
+  uint32_t u32() {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(b[at + i]) << (8 * i);
+    at += 4;
+    return v;
+  }
+  int16_t i16() { return static_cast<int16_t>(u16()); }
+  int32_t i32() { return static_cast<int32_t>(u32()); }
+};
+
+Frame frame(uint8_t type, uint8_t seq) {
+  Frame f;
+  f.type = type;
+  f.seq = seq;
+  return f;
+}
+
+void check_motors(std::size_t n) {
+  if (n == 0 || n > proto::kMaxMotors)
+    throw std::invalid_argument("AIRBoard frames carry 1.." + std::to_string(proto::kMaxMotors) +
+                                " motors, got " + std::to_string(n));
+}
+
+}  // namespace
+
+int32_t to_mrad(double v) { return round_sat<int32_t>(v * 1000.0); }
+int16_t to_duty(double v) { return round_sat<int16_t>(v * 10000.0); }
+int32_t to_q16(double v) { return round_sat<int32_t>(v * 65536.0); }
+
+Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds) {
+  check_motors(speeds.size());
+  Frame f = frame(proto::kSetSpeed, seq);
+  Writer w{f.payload};
+  w.u8(static_cast<uint8_t>(speeds.size()));
+  for (double s : speeds) w.i32(to_mrad(s));
+  return f;
+}
+
+Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties) {
+  check_motors(duties.size());
+  Frame f = frame(proto::kSetPwm, seq);
+  Writer w{f.payload};
+  w.u8(static_cast<uint8_t>(duties.size()));
+  for (double d : duties) w.i16(to_duty(d));
+  return f;
+}
+
+Frame make_set_gains(uint8_t seq, const Gains& g) {
+  Frame f = frame(proto::kSetGains, seq);
+  Writer w{f.payload};
+  w.u8(g.motor);
+  w.i32(to_q16(g.kp));
+  w.i32(to_q16(g.ki));
+  return f;
+}
+
+Frame make_simple(uint8_t type, uint8_t seq) { return frame(type, seq); }
+
+Frame make_set_stream(uint8_t seq, uint16_t period_ms) {
+  Frame f = frame(proto::kSetStream, seq);
+  Writer w{f.payload};
+  w.u16(period_ms);
+  return f;
+}
+
+Frame make_state(uint8_t seq, const BoardState& s) {
+  check_motors(s.motors.size());
+  Frame f = frame(proto::kState, seq);
+  Writer w{f.payload};
+  w.u32(s.time_ms);
+  w.u8(s.status);
+  w.u8(s.last_seq);
+  w.u16(s.since_cmd_ms);
+  w.u16(s.frames_bad);
+  w.u16(s.watchdog_trips);
+  w.u8(static_cast<uint8_t>(s.motors.size()));
+  for (const MotorState& m : s.motors) {
+    w.i32(m.ticks);
+    w.i32(to_mrad(m.speed));
+    w.i32(to_mrad(m.setpoint));
+    w.i16(to_duty(m.duty));
+    w.u8(m.status);
+  }
+  return f;
+}
+
+Frame make_info(uint8_t seq, const BoardInfo& i) {
+  Frame f = frame(proto::kInfo, seq);
+  Writer w{f.payload};
+  w.u8(i.fw_major);
+  w.u8(i.fw_minor);
+  w.u8(i.motors);
+  w.u32(i.counts_per_rev);
+  w.u16(i.control_hz);
+  w.u32(i.pwm_hz);
+  w.i32(to_mrad(i.max_speed));
+  w.u16(i.watchdog_ms);
+  return f;
+}
+
+Frame make_nack(uint8_t seq, uint8_t type, uint8_t reason) {
+  Frame f = frame(proto::kNack, seq);
+  f.payload = {type, reason};
+  return f;
+}
+
+bool parse_set_speed(const Frame& f, std::vector<double>* speeds) {
+  if (f.type != proto::kSetSpeed || f.payload.empty()) return false;
+  const std::size_t n = f.payload[0];
+  if (n == 0 || n > proto::kMaxMotors || f.payload.size() != 1 + 4 * n) return false;
+  Reader r{f.payload, 1};
+  speeds->resize(n);
+  for (std::size_t i = 0; i < n; ++i) (*speeds)[i] = r.i32() / 1000.0;
+  return true;
+}
+
+bool parse_set_pwm(const Frame& f, std::vector<double>* duties) {
+  if (f.type != proto::kSetPwm || f.payload.empty()) return false;
+  const std::size_t n = f.payload[0];
+  if (n == 0 || n > proto::kMaxMotors || f.payload.size() != 1 + 2 * n) return false;
+  Reader r{f.payload, 1};
+  duties->resize(n);
+  for (std::size_t i = 0; i < n; ++i) (*duties)[i] = r.i16() / 10000.0;
+  return true;
+}
+
+bool parse_set_gains(const Frame& f, Gains* g) {
+  if (f.type != proto::kSetGains || f.payload.size() != 9) return false;
+  Reader r{f.payload};
+  g->motor = r.u8();
+  g->kp = r.i32() / 65536.0;
+  g->ki = r.i32() / 65536.0;
+  return true;
+}
+
+bool parse_set_stream(const Frame& f, uint16_t* period_ms) {
+  if (f.type != proto::kSetStream || f.payload.size() != 2) return false;
+  Reader r{f.payload};
+  *period_ms = r.u16();
+  return true;
+}
+
+bool parse_state(const Frame& f, BoardState* s) {
+  if (f.type != proto::kState || f.payload.size() < 13) return false;
+  const std::size_t n = f.payload[12];
+  if (n == 0 || n > proto::kMaxMotors || f.payload.size() != 13 + 15 * n) return false;
+  Reader r{f.payload};
+  s->time_ms = r.u32();
+  s->status = r.u8();
+  s->last_seq = r.u8();
+  s->since_cmd_ms = r.u16();
+  s->frames_bad = r.u16();
+  s->watchdog_trips = r.u16();
+  r.u8();
+  s->motors.resize(n);
+  for (MotorState& m : s->motors) {
+    m.ticks = r.i32();
+    m.speed = r.i32() / 1000.0;
+    m.setpoint = r.i32() / 1000.0;
+    m.duty = r.i16() / 10000.0;
+    m.status = r.u8();
+  }
+  return true;
+}
+
+bool parse_info(const Frame& f, BoardInfo* i) {
+  if (f.type != proto::kInfo || f.payload.size() != 19) return false;
+  Reader r{f.payload};
+  i->fw_major = r.u8();
+  i->fw_minor = r.u8();
+  i->motors = r.u8();
+  i->counts_per_rev = r.u32();
+  i->control_hz = r.u16();
+  i->pwm_hz = r.u32();
+  i->max_speed = r.i32() / 1000.0;
+  i->watchdog_ms = r.u16();
+  return true;
+}
+
+bool parse_nack(const Frame& f, uint8_t* type, uint8_t* reason) {
+  if (f.type != proto::kNack || f.payload.size() != 2) return false;
+  *type = f.payload[0];
+  *reason = f.payload[1];
+  return true;
+}
+
+}  // namespace mrt::airboard

@@ -1,0 +1,130 @@
+#include "mrt_airboard/pty_emulator.h"
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <stdexcept>
+#include <sys/stat.h>
+#include <termios.h>
+#include <unistd.h>
+
+namespace mrt::airboard {
+
+PtyEmulator::PtyEmulator(const FirmwareConfig& fw, const LineFaults& faults, std::string link_path)
+    : fw_(fw), faults_(faults), link_path_(std::move(link_path)), rng_(faults.seed) {
+  char name[256] = {0};
+  termios t{};
+  cfmakeraw(&t);
+  t.c_cflag |= CLOCAL | CREAD;
+  cfsetispeed(&t, B115200);
+  cfsetospeed(&t, B115200);
+  if (openpty(&master_, &slave_, name, &t, nullptr) != 0)
+    throw std::runtime_error(std::string("openpty failed: ") + std::strerror(errno));
+  slave_path_ = name;
+  fcntl(master_, F_SETFL, fcntl(master_, F_GETFL) | O_NONBLOCK);
+  fcntl(master_, F_SETFD, FD_CLOEXEC);
+  fcntl(slave_, F_SETFD, FD_CLOEXEC);
+  if (!link_path_.empty()) {
+    struct stat st{};
+    if (lstat(link_path_.c_str(), &st) == 0) {
+      if (!S_ISLNK(st.st_mode)) {
+        ::close(master_);
+        ::close(slave_);
+        throw std::runtime_error("refusing to replace " + link_path_ + ": not a symlink");
+      }
+      ::unlink(link_path_.c_str());
+    }
+    if (::symlink(slave_path_.c_str(), link_path_.c_str()) != 0) {
+      const std::string e = std::strerror(errno);
+      ::close(master_);
+      ::close(slave_);
+      throw std::runtime_error("cannot create symlink " + link_path_ + ": " + e);
+    }
+  }
+}
+
+PtyEmulator::~PtyEmulator() {
+  if (!link_path_.empty()) {
+    // Remove the link only if it still points at our slave.
+    char buf[256];
+    const ssize_t n = ::readlink(link_path_.c_str(), buf, sizeof(buf) - 1);
+    if (n > 0 && std::string(buf, static_cast<std::size_t>(n)) == slave_path_) ::unlink(link_path_.c_str());
+  }
+  if (master_ >= 0) ::close(master_);
+  if (slave_ >= 0) ::close(slave_);
+}
+
+void PtyEmulator::corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count) {
+  if (p <= 0.0) return;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::uniform_int_distribution<int> bit(0, 7);
+  for (std::size_t i = 0; i < n; ++i)
+    if (u(rng_) < p) {
+      d[i] ^= static_cast<uint8_t>(1u << bit(rng_));
+      ++*count;
+    }
+}
+
+void PtyEmulator::flush() {
+  std::vector<uint8_t> out = fw_.take_output();
+  if (out.empty()) return;
+  corrupt(out.data(), out.size(), faults_.corrupt_tx, &stats_.bytes_corrupted_out);
+  std::size_t done = 0;
+  while (done < out.size()) {
+    const ssize_t k = ::write(master_, out.data() + done, out.size() - done);
+    if (k > 0) {
+      done += static_cast<std::size_t>(k);
+    } else if (k < 0 && errno == EINTR) {
+      continue;
+    } else {
+      break;  // nobody reads the line: the bytes are lost, as on a UART
+    }
+  }
+  stats_.bytes_out += done;
+  stats_.bytes_dropped_out += out.size() - done;
+}
+
+void PtyEmulator::run(const std::atomic<bool>& stop) {
+  using clock = std::chrono::steady_clock;
+  const auto period = std::chrono::microseconds(1000000 / fw_.config().control_hz);
+  auto next = clock::now() + period;
+  uint8_t buf[4096];
+  while (!stop.load(std::memory_order_relaxed)) {
+    const auto now = clock::now();
+    if (now < next) {
+      const auto wait = std::chrono::duration_cast<std::chrono::nanoseconds>(next - now);
+      timespec ts{static_cast<time_t>(wait.count() / 1000000000), static_cast<long>(wait.count() % 1000000000)};
+      pollfd p{master_, POLLIN, 0};
+      const int r = ::ppoll(&p, 1, &ts, nullptr);
+      if (r > 0 && (p.revents & POLLIN)) {
+        const ssize_t n = ::read(master_, buf, sizeof(buf));
+        if (n > 0) {
+          stats_.bytes_in += static_cast<uint64_t>(n);
+          const bool cut = faults_.cut_rx_after >= 0.0 && fw_.time_ms() >= faults_.cut_rx_after * 1000.0;
+          if (cut) {
+            stats_.bytes_cut_in += static_cast<uint64_t>(n);
+          } else {
+            corrupt(buf, static_cast<std::size_t>(n), faults_.corrupt_rx, &stats_.bytes_corrupted_in);
+            fw_.receive(buf, static_cast<std::size_t>(n));
+            flush();
+          }
+        }
+      }
+      continue;
+    }
+    // One or more control periods are due.
+    int steps = 0;
+    while (clock::now() >= next && steps < 100) {
+      fw_.step();
+      next += period;
+      if (++steps > 1) ++stats_.late_ticks;
+    }
+    if (clock::now() >= next) next = clock::now() + period;  // far behind: drop the backlog
+    flush();
+  }
+}
+
+}  // namespace mrt::airboard

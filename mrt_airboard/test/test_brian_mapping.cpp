@@ -1,0 +1,38 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mrt_airboard/brian_mapping.h"
+
+using namespace mrt::airboard;
+
+TEST(BrianMapping, PolarForOmniBases) {
+  BrianMapping m(BrianMappingParams::for_base(BaseType::kOmni));
+  // SpeedModule 50 cm/s towards SpeedAngle 90 deg (left), Rotation 30 deg/s.
+  const Twist2D t = m.to_twist({{"SpeedModule", 50.0}, {"SpeedAngle", 90.0}, {"Rotation", 30.0}, {"Other", 9.0}});
+  EXPECT_NEAR(t.vx, 0.0, 1e-12);
+  EXPECT_NEAR(t.vy, 0.5, 1e-12);
+  EXPECT_NEAR(t.omega, M_PI / 6.0, 1e-12);
+  const Twist2D b = m.to_twist({{"SpeedModule", 20.0}, {"SpeedAngle", 180.0}});
+  EXPECT_NEAR(b.vx, -0.2, 1e-12);
+  EXPECT_NEAR(b.omega, 0.0, 1e-12);
+}
+
+TEST(BrianMapping, UnicycleForDifferentialBases) {
+  BrianMapping m(BrianMappingParams::for_base(BaseType::kDifferential));
+  const Twist2D t = m.to_twist({{"Speed", 120.0}, {"Jog", -90.0}, {"SpeedAngle", 45.0}});
+  EXPECT_NEAR(t.vx, 1.2, 1e-12);
+  EXPECT_NEAR(t.vy, 0.0, 1e-12);
+  EXPECT_NEAR(t.omega, -M_PI / 2.0, 1e-12);
+  // Absent commands count as 0; non-finite values are ignored.
+  const Twist2D z = m.to_twist({{"Speed", NAN}});
+  EXPECT_EQ(z.vx, 0.0);
+}
+
+TEST(BrianMapping, ParsesAndValidates) {
+  EXPECT_EQ(BrianMappingParams::parse_mode("polar"), BrianMappingParams::Mode::kPolar);
+  EXPECT_THROW(BrianMappingParams::parse_mode("cartesian"), std::invalid_argument);
+  BrianMappingParams p;
+  p.speed_name = "";
+  EXPECT_THROW(BrianMapping{p}, std::invalid_argument);
+}

@@ -1,0 +1,129 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mrt_airboard/kinematics.h"
+
+using namespace mrt::airboard;
+
+namespace {
+constexpr double kS = 0.70710678118654752440;  // sin 45 deg
+constexpr double kC30 = 0.86602540378443864676; // cos 30 deg
+
+void expect_wheels(const std::vector<double>& got, const std::vector<double>& want) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12) << "wheel " << i;
+}
+}  // namespace
+
+// Hand-computed: w = (vx -+ omega * track / 2) / r with r 0.05, track 0.38.
+TEST(Differential, HandComputedWheelSpeeds) {
+  auto k = make_kinematics(base_preset("ianus3"));
+  expect_wheels(k->inverse({1.0, 0.0, 0.0}), {20.0, 20.0});
+  expect_wheels(k->inverse({0.0, 1.0, 0.0}), {0.0, 0.0});  // cannot move sideways
+  expect_wheels(k->inverse({0.0, 0.0, 1.0}), {-3.8, 3.8});
+}
+
+// Triskar, wheels at 90/210/330 deg, L 0.2, r 0.04: w_i = (-sin a vx + cos a vy + L omega) / r.
+TEST(Triskar, HandComputedWheelSpeeds) {
+  auto k = make_kinematics(base_preset("triskar"));
+  expect_wheels(k->inverse({1.0, 0.0, 0.0}), {-25.0, 12.5, 12.5});
+  expect_wheels(k->inverse({0.0, 1.0, 0.0}), {0.0, -kC30 / 0.04, kC30 / 0.04});
+  expect_wheels(k->inverse({0.0, 0.0, 1.0}), {5.0, 5.0, 5.0});
+}
+
+TEST(Omni4, HandComputedWheelSpeeds) {
+  auto k = make_kinematics(base_preset("omni4"));
+  const double w = kS / 0.04;
+  expect_wheels(k->inverse({1.0, 0.0, 0.0}), {-w, -w, w, w});
+  expect_wheels(k->inverse({0.0, 1.0, 0.0}), {w, -w, -w, w});
+  expect_wheels(k->inverse({0.0, 0.0, 1.0}), {5.0, 5.0, 5.0, 5.0});
+}
+
+TEST(Kinematics, InverseThenForwardIsIdentity) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (const char* name : {"ianus3", "triskar", "omni4"}) {
+    auto k = make_kinematics(base_preset(name));
+    for (int i = 0; i < 1000; ++i) {
+      Twist2D t{u(rng), k->holonomic() ? u(rng) : 0.0, u(rng)};
+      const Twist2D b = k->forward(k->inverse(t));
+      EXPECT_NEAR(b.vx, t.vx, 1e-12) << name;
+      EXPECT_NEAR(b.vy, t.vy, 1e-12) << name;
+      EXPECT_NEAR(b.omega, t.omega, 1e-12) << name;
+    }
+  }
+}
+
+TEST(Kinematics, ForwardRejectsWrongSize) {
+  auto k = make_kinematics(base_preset("triskar"));
+  EXPECT_THROW(k->forward({1.0, 2.0}), std::invalid_argument);
+  auto d = make_kinematics(base_preset("ianus3"));
+  EXPECT_THROW(d->forward({1.0, 2.0, 3.0}), std::invalid_argument);
+}
+
+TEST(Kinematics, DegenerateOmniIsRejected) {
+  BaseParams p = base_preset("triskar");
+  p.wheel_angles = {0.0, 0.0, 0.0};
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+  p = base_preset("ianus3");
+  p.track = -1.0;
+  try {
+    p.validate();
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'track'"), std::string::npos);
+  }
+  EXPECT_THROW(base_preset("nope"), std::invalid_argument);
+  EXPECT_THROW(parse_base_type("tank"), std::invalid_argument);
+}
+
+TEST(Saturation, KeepsDirectionOfMotion) {
+  for (const char* name : {"ianus3", "triskar", "omni4"}) {
+    BaseParams p = base_preset(name);
+    auto k = make_kinematics(p);
+    const Twist2D req{3.0, k->holonomic() ? 2.0 : 0.0, 4.0};
+    std::vector<double> w = k->inverse(req);
+    const double s = saturate_preserving_direction(w, p.max_wheel_speed);
+    EXPECT_LT(s, 1.0) << name;
+    double peak = 0.0;
+    for (double v : w) peak = std::max(peak, std::fabs(v));
+    EXPECT_NEAR(peak, p.max_wheel_speed, 1e-12) << name;
+    const Twist2D got = k->forward(w);
+    EXPECT_NEAR(got.vx, s * req.vx, 1e-12) << name;
+    EXPECT_NEAR(got.vy, s * req.vy, 1e-12) << name;
+    EXPECT_NEAR(got.omega, s * req.omega, 1e-12) << name;
+  }
+  std::vector<double> w{1.0, -2.0};
+  EXPECT_EQ(saturate_preserving_direction(w, 5.0), 1.0);
+  EXPECT_EQ(w[1], -2.0);
+}
+
+TEST(VelocityLimiter, DeadbandSaturationAndAcceleration) {
+  BaseParams p = base_preset("triskar");
+  p.deadband_linear = 0.01;
+  p.deadband_angular = 0.02;
+  p.max_wheel_accel = 100.0;
+  VelocityLimiter lim(p);
+  auto r = lim.update({0.005, 0.0, 0.01}, 0.02);
+  for (double w : r.wheels) EXPECT_EQ(w, 0.0);
+  // From rest, a step to 1 m/s forward is limited to 100 * 0.02 = 2 rad/s on
+  // the fastest wheel, in the direction of the request.
+  r = lim.update({1.0, 0.0, 0.0}, 0.02);
+  EXPECT_TRUE(r.accel_limited);
+  expect_wheels(r.wheels, {-2.0, 1.0, 1.0});
+  for (int i = 0; i < 20; ++i) r = lim.update({1.0, 0.0, 0.0}, 0.02);
+  EXPECT_FALSE(r.accel_limited);
+  expect_wheels(r.wheels, {-25.0, 12.5, 12.5});
+  // Too fast: the whole vector is scaled to the 40 rad/s limit.
+  p.max_wheel_accel = 0.0;
+  VelocityLimiter fast(p);
+  r = fast.update({2.0, 0.0, 0.0}, 0.02);
+  EXPECT_TRUE(r.saturated);
+  expect_wheels(r.wheels, {-40.0, 20.0, 20.0});
+  // Differential bases drop vy.
+  VelocityLimiter diff(base_preset("ianus3"));
+  r = diff.update({0.0, 1.0, 0.0}, 0.02);
+  expect_wheels(r.wheels, {0.0, 0.0});
+}

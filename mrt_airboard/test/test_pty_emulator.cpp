@@ -1,0 +1,60 @@
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+#include <unistd.h>
+
+#include "mrt_airboard/pty_emulator.h"
+#include "mrt_airboard/serial_port.h"
+
+using namespace mrt::airboard;
+
+namespace {
+// Reads frames for up to `ms` until `pred` accepts one.
+template <typename Pred>
+bool read_until(SerialPort& port, FrameDecoder& dec, int ms, Pred pred) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
+  uint8_t buf[512];
+  bool ok = false;
+  while (!ok && std::chrono::steady_clock::now() < end) {
+    port.wait_readable(10);
+    const std::size_t n = port.read(buf, sizeof(buf));
+    dec.feed(buf, n, [&](const Frame& f) { ok = ok || pred(f); });
+  }
+  return ok;
+}
+}  // namespace
+
+TEST(PtyEmulator, ServesTheProtocolOnAPseudoTerminal) {
+  const std::string link = "/tmp/mrt_airboard_gtest_" + std::to_string(::getpid());
+  std::atomic<bool> stop{false};
+  FirmwareConfig c;
+  c.motors = 3;
+  auto emu = std::make_unique<PtyEmulator>(c, LineFaults{}, link);
+  std::thread t([&] { emu->run(stop); });
+
+  SerialPort port;
+  port.open(link, 115200);
+  FrameDecoder dec;
+  auto f = encode_frame(make_simple(proto::kGetInfo, 1));
+  port.write(f.data(), f.size());
+  BoardInfo info;
+  EXPECT_TRUE(read_until(port, dec, 1000, [&](const Frame& fr) { return parse_info(fr, &info); }));
+  EXPECT_EQ(info.motors, 3);
+
+  f = encode_frame(make_set_speed(2, {5.0, 0.0, -5.0}));
+  port.write(f.data(), f.size());
+  BoardState s;
+  EXPECT_TRUE(read_until(port, dec, 1000, [&](const Frame& fr) {
+    return parse_state(fr, &s) && fr.seq == 2;
+  }));
+  ASSERT_EQ(s.motors.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.motors[0].setpoint, 5.0);
+  EXPECT_DOUBLE_EQ(s.motors[2].setpoint, -5.0);
+
+  stop = true;
+  t.join();
+  EXPECT_GE(emu->firmware().commands_applied(), 1u);
+  emu.reset();
+  EXPECT_NE(::access(link.c_str(), F_OK), 0);  // the symlink is gone
+}

@@ -1,0 +1,172 @@
+// airboard_frame: encodes AIRBoard frames to hex, or decodes a hex/binary
+// capture of the serial line into readable frames.
+//
+//   airboard_frame encode set_speed SEQ W1 [W2 ..]     (rad/s)
+//   airboard_frame encode set_pwm SEQ D1 [D2 ..]       (duty in [-1, 1])
+//   airboard_frame encode set_gains SEQ MOTOR KP KI    (MOTOR 255 = all)
+//   airboard_frame encode set_stream SEQ PERIOD_MS
+//   airboard_frame encode get_state|heartbeat|get_info SEQ
+//   airboard_frame decode [--binary] [FILE]            (hex bytes, whitespace separated; '-' or none = stdin)
+//
+// Exit codes: 0 ok, 2 usage or input error.
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mrt_airboard/protocol.h"
+
+using namespace mrt::airboard;
+
+namespace {
+
+int usage() {
+  std::cerr << "usage: airboard_frame encode set_speed|set_pwm|set_gains|set_stream|get_state|heartbeat|get_info SEQ [ARGS..]\n"
+               "       airboard_frame decode [--binary] [FILE]\n";
+  return 2;
+}
+
+double num(const std::string& s) {
+  std::size_t used = 0;
+  const double v = std::stod(s, &used);
+  if (used != s.size()) throw std::invalid_argument("expected a number, got '" + s + "'");
+  return v;
+}
+
+std::string type_name(uint8_t t) {
+  switch (t) {
+    case proto::kSetSpeed: return "SET_SPEED";
+    case proto::kSetPwm: return "SET_PWM";
+    case proto::kSetGains: return "SET_GAINS";
+    case proto::kGetState: return "GET_STATE";
+    case proto::kHeartbeat: return "HEARTBEAT";
+    case proto::kSetStream: return "SET_STREAM";
+    case proto::kGetInfo: return "GET_INFO";
+    case proto::kState: return "STATE";
+    case proto::kInfo: return "INFO";
+    case proto::kNack: return "NACK";
+    default: return "UNKNOWN";
+  }
+}
+
+void print(const Frame& f) {
+  std::cout << type_name(f.type) << " seq=" << int(f.seq);
+  std::vector<double> v;
+  Gains g;
+  uint16_t p;
+  BoardState s;
+  BoardInfo i;
+  uint8_t a, b;
+  if (parse_set_speed(f, &v) || parse_set_pwm(f, &v)) {
+    for (double x : v) std::cout << ' ' << x;
+  } else if (parse_set_gains(f, &g)) {
+    std::cout << " motor=" << int(g.motor) << " kp=" << g.kp << " ki=" << g.ki;
+  } else if (parse_set_stream(f, &p)) {
+    std::cout << " period_ms=" << p;
+  } else if (parse_state(f, &s)) {
+    std::cout << " time_ms=" << s.time_ms << " status=0x" << std::hex << int(s.status) << std::dec
+              << " last_seq=" << int(s.last_seq) << " since_cmd_ms=" << s.since_cmd_ms
+              << " frames_bad=" << s.frames_bad << " watchdog_trips=" << s.watchdog_trips;
+    for (const auto& m : s.motors)
+      std::cout << " [ticks=" << m.ticks << " speed=" << m.speed << " setpoint=" << m.setpoint
+                << " duty=" << m.duty << " status=0x" << std::hex << int(m.status) << std::dec << ']';
+  } else if (parse_info(f, &i)) {
+    std::cout << " fw=" << int(i.fw_major) << '.' << int(i.fw_minor) << " motors=" << int(i.motors)
+              << " cpr=" << i.counts_per_rev << " control_hz=" << i.control_hz << " pwm_hz=" << i.pwm_hz
+              << " max_speed=" << i.max_speed << " watchdog_ms=" << i.watchdog_ms;
+  } else if (parse_nack(f, &a, &b)) {
+    std::cout << " type=0x" << std::hex << int(a) << std::dec << " reason=" << int(b);
+  } else if (!f.payload.empty()) {
+    std::cout << " (malformed payload of " << f.payload.size() << " bytes)";
+  }
+  std::cout << '\n';
+}
+
+int encode(const std::vector<std::string>& a) {
+  if (a.size() < 2) return usage();
+  const auto seq = static_cast<uint8_t>(std::stoi(a[1]));
+  std::vector<double> v;
+  for (std::size_t i = 2; i < a.size(); ++i) v.push_back(num(a[i]));
+  Frame f;
+  const std::string& t = a[0];
+  if (t == "set_speed") f = make_set_speed(seq, v);
+  else if (t == "set_pwm") f = make_set_pwm(seq, v);
+  else if (t == "set_gains" && v.size() == 3) f = make_set_gains(seq, Gains{static_cast<uint8_t>(v[0]), v[1], v[2]});
+  else if (t == "set_stream" && v.size() == 1) f = make_set_stream(seq, static_cast<uint16_t>(v[0]));
+  else if (t == "get_state" && v.empty()) f = make_simple(proto::kGetState, seq);
+  else if (t == "heartbeat" && v.empty()) f = make_simple(proto::kHeartbeat, seq);
+  else if (t == "get_info" && v.empty()) f = make_simple(proto::kGetInfo, seq);
+  else return usage();
+  const auto bytes = encode_frame(f);
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    std::cout << (i ? " " : "") << std::uppercase << std::hex << std::setw(2) << std::setfill('0') << int(bytes[i]);
+  std::cout << '\n';
+  return 0;
+}
+
+int decode(std::vector<std::string> a) {
+  bool binary = false;
+  if (!a.empty() && a[0] == "--binary") {
+    binary = true;
+    a.erase(a.begin());
+  }
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  const std::string name = a.empty() ? "-" : a[0];
+  if (name != "-") {
+    file.open(name, std::ios::binary);
+    if (!file) {
+      std::cerr << name << ": cannot open file\n";
+      return 2;
+    }
+    in = &file;
+  }
+  std::vector<uint8_t> bytes;
+  if (binary) {
+    bytes.assign(std::istreambuf_iterator<char>(*in), std::istreambuf_iterator<char>());
+  } else {
+    std::string line;
+    int n = 0;
+    while (std::getline(*in, line)) {
+      ++n;
+      std::istringstream ls(line);
+      std::string tok;
+      while (ls >> tok) {
+        if (tok[0] == '#') break;
+        if (tok.size() != 2 || !std::isxdigit(tok[0]) || !std::isxdigit(tok[1])) {
+          std::cerr << name << ':' << n << ':' << (line.find(tok) + 1) << ": expected a hex byte, got '" << tok << "'\n";
+          return 2;
+        }
+        bytes.push_back(static_cast<uint8_t>(std::stoi(tok, nullptr, 16)));
+      }
+    }
+  }
+  FrameDecoder dec;
+  dec.feed(bytes.data(), bytes.size(), print);
+  const auto& s = dec.stats();
+  std::cout << "# " << s.frames_ok << " frames, " << s.crc_errors << " bad CRC, " << s.length_errors
+            << " bad length, " << s.bytes_skipped << " bytes skipped\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> a(argv + 1, argv + argc);
+  if (a.empty()) return usage();
+  const std::string cmd = a[0];
+  a.erase(a.begin());
+  try {
+    if (cmd == "encode") return encode(a);
+    if (cmd == "decode") return decode(a);
+  } catch (const std::exception& e) {
+    std::cerr << "airboard_frame: " << e.what() << '\n';
+    return 2;
+  }
+  return usage();
+}
