@@ -36,15 +36,21 @@ double ray_circle(const Point2D& o, double dx, double dy, const Circle& c) {
   return b - std::sqrt(disc);
 }
 
-// The world's cylinders (posts, ball, movers) plus `extra`.
-std::vector<Circle> world_circles(const World& w, const std::vector<Circle>& extra) {
-  std::vector<Circle> out;
-  out.reserve(w.posts.size() + w.movers.size() + extra.size() + 1);
-  for (const Post& p : w.posts) out.push_back({p.center, p.radius});
-  if (w.ball.enabled) out.push_back({w.ball.position, w.ball.radius});
-  for (const Mover& m : w.movers) out.push_back({m.position, m.radius});
-  out.insert(out.end(), extra.begin(), extra.end());
-  return out;
+// Calls f on every wall and goal wall without building a list.
+template <typename F>
+void for_each_solid(const World& w, F f) {
+  for (const Segment& s : w.walls) f(s);
+  for (const Goal& g : w.goals)
+    for (const Segment& s : goal_walls(g)) f(s);
+}
+
+// Calls f on the world's cylinders (posts, ball, movers) and on `extra`.
+template <typename F>
+void for_each_circle(const World& w, const std::vector<Circle>& extra, F f) {
+  for (const Post& p : w.posts) f(Circle{p.center, p.radius});
+  if (w.ball.enabled) f(Circle{w.ball.position, w.ball.radius});
+  for (const Mover& m : w.movers) f(Circle{m.position, m.radius});
+  for (const Circle& c : extra) f(c);
 }
 
 // Distance from o to the part of segment s inside the wedge of unit
@@ -121,13 +127,8 @@ std::optional<double> ray_cast(const World& w, const std::vector<Circle>& extra,
                                double angle, double max_range) {
   const double dx = std::cos(angle), dy = std::sin(angle);
   double best = INFINITY;
-  for (const Segment& s : w.walls) best = std::min(best, ray_segment(origin, dx, dy, s));
-  for (const Goal& g : w.goals)
-    for (const Segment& s : goal_walls(g)) best = std::min(best, ray_segment(origin, dx, dy, s));
-  for (const Post& p : w.posts) best = std::min(best, ray_circle(origin, dx, dy, {p.center, p.radius}));
-  if (w.ball.enabled) best = std::min(best, ray_circle(origin, dx, dy, {w.ball.position, w.ball.radius}));
-  for (const Mover& m : w.movers) best = std::min(best, ray_circle(origin, dx, dy, {m.position, m.radius}));
-  for (const Circle& c : extra) best = std::min(best, ray_circle(origin, dx, dy, c));
+  for_each_solid(w, [&](const Segment& s) { best = std::min(best, ray_segment(origin, dx, dy, s)); });
+  for_each_circle(w, extra, [&](const Circle& c) { best = std::min(best, ray_circle(origin, dx, dy, c)); });
   if (best > max_range) return std::nullopt;
   return best;
 }
@@ -146,9 +147,9 @@ double sonar_range(const World& w, const std::vector<Circle>& extra, const Pose2
     const Point2D right{std::cos(heading - half), std::sin(heading - half)};
     const Point2D left{std::cos(heading + half), std::sin(heading + half)};
     best = INFINITY;
-    for (const Segment& seg : solid_segments(w)) best = std::min(best, wedge_segment(o, right, left, mid, seg));
-    for (const Circle& c : world_circles(w, extra)) {
-      const double cx = c.center.x - o.x, cy = c.center.y - o.y, dist = std::hypot(cx, cy);
+    for_each_solid(w, [&](const Segment& seg) { best = std::min(best, wedge_segment(o, right, left, mid, seg)); });
+    for_each_circle(w, extra, [&](const Circle& c) {
+      const double cx = c.center.x - o.x, cy = c.center.y - o.y, dist = std::sqrt(cx * cx + cy * cy);
       if (dist <= c.radius) {
         best = 0.0;
       } else if (std::fabs(normalize_angle(std::atan2(cy, cx) - heading)) <= half) {
@@ -156,7 +157,7 @@ double sonar_range(const World& w, const std::vector<Circle>& extra, const Pose2
       } else {  // otherwise the nearest point in the cone lies on one of its edges
         best = std::min({best, ray_circle(o, right.x, right.y, c), ray_circle(o, left.x, left.y, c)});
       }
-    }
+    });
   }
   return std::min(s.max_range, std::max(s.min_range, best));
 }
@@ -179,7 +180,7 @@ std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherR
   // no wall and no cylinder but its own (`skip`).
   auto see = [&](const Point2D& p, std::size_t skip, const std::string& name, const std::string& cls,
                  const std::string& color) {
-    const double dx = p.x - eye.x, dy = p.y - eye.y, dist = std::hypot(dx, dy);
+    const double dx = p.x - eye.x, dy = p.y - eye.y, dist = std::sqrt(dx * dx + dy * dy);
     if (dist > cfg.vision_range || dist < 1e-9) return;
     // Stop the sight line 1 um short so a target on a wall's end is visible.
     const double k = (dist - 1e-6) / dist;

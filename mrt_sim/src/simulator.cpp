@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kPushSpeed = 0.05;  // m/s, extra separating speed of a pushed ball
 
-double dist(const Point2D& a, const Point2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist(const Point2D& a, const Point2D& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 
 // Gives the ball at least the normal velocity of the pusher's surface
 // (centre `c`, radius `r`, contact-point velocity `v`) plus kPushSpeed, and

@@ -184,6 +184,16 @@ TEST(Sonar, Post) {
   EXPECT_NEAR(sonar_range(w, {}, Pose2D(), sonar(13.0, 20.0)), b - h, 1e-12);
 }
 
+TEST(Sonar, ConeDoesNotMissThinPostBetweenRays) {
+  // A 2 cm rod at 3 m, 2 deg off the axis of a 24 deg cone. Seven rays 4 deg
+  // apart (0, +-4, ...) would pass 3 sin 2 = 0.105 m from it and miss; the
+  // nearest echo is 3 - 0.02 = 2.98 m.
+  World w;
+  w.posts.push_back(post("rod", 3.0 * std::cos(deg_to_rad(2.0)), 3.0 * std::sin(deg_to_rad(2.0)), 0.02));
+  EXPECT_NEAR(sonar_range(w, {}, Pose2D(), sonar(0.0, 24.0)), 2.98, 1e-12);
+  for (int k = -3; k <= 3; ++k) EXPECT_FALSE(ray_cast(w, {}, {0.0, 0.0}, deg_to_rad(4.0 * k), 5.0).has_value());
+}
+
 TEST(Sonar, ClampsAndSeesOtherRobots) {
   World w;
   // Nothing there: max_range.

@@ -37,18 +37,25 @@ class MouseModel {
   int out_x_ = 0, out_y_ = 0;         // whole counts not yet read
 };
 
-/// Distance from `origin` along unit direction `angle` to the first hit
-/// with the world's walls, posts, goals, the ball, movers, and the given
-/// extra circles (other robots), or nullopt beyond max_range.
+/// A circle in the world frame (another robot's footprint).
 struct Circle {
   Point2D center;
   double radius;
 };
+
+/// Distance from `origin` along the direction `angle` (world frame, rad) to
+/// the first hit with the world's walls, goal walls, posts, the ball, movers
+/// and the `extra` circles (other robots), or nullopt beyond max_range; 0
+/// when the origin is inside a circle.
 std::optional<double> ray_cast(const World& w, const std::vector<Circle>& extra, Point2D origin,
                                double angle, double max_range);
 
-/// A sonar reading: the minimum over rays spread across the cone (the
-/// nearest echo), clamped to [min_range, max_range]; max_range means no echo.
+/// A sonar reading without noise: the distance from the transducer to the
+/// nearest point of any wall, goal wall, post, ball, mover or `extra` circle
+/// inside the cone of full angle s.fov around the beam axis (the nearest
+/// echo), clamped to [min_range, max_range]; max_range means no echo.
+/// Computed exactly, not by sampling rays, so thin posts between rays are
+/// not missed; fov = 0 is a single ray (ray_cast).
 double sonar_range(const World& w, const std::vector<Circle>& extra, const Pose2D& robot,
                    const SonarConfig& s);
 
@@ -61,9 +68,15 @@ struct SeenObject {
   double bearing = 0.0;   // rad, counter-clockwise from the robot's x axis
 };
 
-/// Everything within range and not occluded (the line of sight to the object
-/// centre does not cross a wall or a nearer cylinder), without noise.
-/// `others` are the other robots (name, position, radius).
+/// Everything within cfg.vision_range of the robot centre and not occluded
+/// (the line of sight to the object centre crosses no wall, goal wall or
+/// cylinder other than the object's own), without noise, in this order:
+/// posts (their class), goals ("Goal" at the mouth centre) and their posts
+/// ("GoalPost", named <goal>_left / <goal>_right looking into the goal), the
+/// ball ("Ball"), movers (their class), other robots ("Robot"), and field
+/// lines as points ("Line", name "line", colour "white") at the middles of
+/// equal pieces about cfg.line_point_spacing long.
+/// `others` are the other robots (name, position, radius, colour).
 struct OtherRobot {
   std::string name;
   Point2D center;

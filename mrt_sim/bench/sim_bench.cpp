@@ -1,0 +1,117 @@
+// sim_bench: throughput of the simulator core on the MSL world.
+// Prints `name: value unit` lines; the ratios compare against a bare
+// kinematics loop measured in the same run, which is what to watch on a
+// shared, noisy machine.
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "mrt_common/angle.h"
+#include "mrt_sim/simulator.h"
+
+using namespace mrt::sim;
+
+namespace {
+
+volatile double g_sink = 0.0;  // keeps the optimiser from dropping the work
+
+// Calls `f` (one operation per call) in batches until `seconds` elapsed;
+// returns operations per second.
+double rate(double seconds, int batch, const std::function<void()>& f) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  long long n = 0;
+  double elapsed = 0.0;
+  do {
+    for (int i = 0; i < batch; ++i) f();
+    n += batch;
+    elapsed = std::chrono::duration<double>(clock::now() - start).count();
+  } while (elapsed < seconds);
+  return n / elapsed;
+}
+
+void print(const char* name, double value, const char* unit) { std::printf("%s: %.4g %s\n", name, value, unit); }
+
+// The MSL world with `n` robots driving circles of 2 m radius that stay
+// clear of each other.
+World msl_world(const std::string& path, int n) {
+  World w = load_world(path);
+  const double xs[] = {-2.0, -7.0, -7.0, -3.5};
+  const double ys[] = {0.0, -4.0, 1.5, -4.5};
+  const RobotConfig first = w.robots[0];
+  w.robots.clear();
+  for (int k = 0; k < n; ++k) {
+    RobotConfig r = first;
+    r.name = "robot" + std::to_string(k + 1);
+    r.initial_pose = Pose2D(xs[k], ys[k], 0.0);
+    w.robots.push_back(r);
+  }
+  return w;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Usage: sim_bench [WORLD.yaml [SECONDS_PER_METRIC]], run from the
+  // workspace root by default.
+  const std::string path = argc > 1 ? argv[1] : "config/worlds/msl_field.yaml";
+  const double secs = argc > 2 ? std::stod(argv[2]) : 1.0;
+  World world;
+  try {
+    world = load_world(path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+
+  // Baseline: the kinematic part of a step alone, for one robot.
+  const BaseGeometry g = world.robots[0].base;
+  Pose2D pose;
+  const double kin = rate(secs, 10000, [&] {
+    auto w = twist_to_wheels(g, {0.5, 0.0, 0.25});
+    saturate_wheels(g, w);
+    const Twist2D t = wheels_to_twist(g, w);
+    pose = pose * mrt::common::exp_twist(t.vx, t.vy, t.omega, 0.001);
+    g_sink = g_sink + pose.x;
+  });
+  print("kinematics_baseline", kin, "steps/s");
+
+  for (int n : {1, 4}) {
+    Simulator sim(msl_world(path, n));
+    for (std::size_t i = 0; i < sim.robots().size(); ++i) sim.set_twist(i, {0.5, 0.0, 0.25});
+    const double r = rate(secs, 1000, [&] { sim.step(); });
+    const std::string name = "sim_step_msl_" + std::to_string(n) + (n == 1 ? "_robot" : "_robots");
+    print(name.c_str(), r, "steps/s");
+    print((name + "_realtime_factor").c_str(), r * sim.dt(), "x");
+    print((name + "_vs_kinematics").c_str(), r / kin, "ratio");
+  }
+
+  const RobotConfig& robot = world.robots[0];
+  const Pose2D at = robot.initial_pose;
+  double angle = 0.0;
+  const double rays = rate(secs, 10000, [&] {
+    angle += 0.01;
+    g_sink = g_sink + ray_cast(world, {}, {at.x, at.y}, angle, 10.0).value_or(0.0);
+  });
+  print("ray_cast_msl", rays, "rays/s");
+  print("ray_cast_msl_vs_kinematics", rays / kin, "ratio");
+
+  std::size_t k = 0;
+  const double sonars = rate(secs, 10000, [&] {
+    const auto& s = robot.sensors.sonars;
+    g_sink = g_sink + sonar_range(world, {}, at, s[k++ % s.size()]);
+  });
+  print("sonar_cone_msl", sonars, "readings/s");
+  print("sonar_cone_msl_vs_kinematics", sonars / kin, "ratio");
+
+  std::size_t seen = 0;
+  const double vision = rate(secs, 100, [&] {
+    const auto v = vision_percepts(world, {}, at, robot.sensors);
+    seen = v.size();
+  });
+  print("vision_msl", vision, "calls/s");
+  print("vision_msl_objects", static_cast<double>(seen), "objects");
+  print("vision_msl_vs_kinematics", vision / kin, "ratio");
+  return 0;
+}
