@@ -302,7 +302,7 @@ MarkerArray world_markers(const World& w, const std::string& frame) {
     out.markers.push_back(m);
     Marker t = make_marker(frame, stamp, "post_names", id++, Marker::TEXT_VIEW_FACING);
     t.pose.position = point(p.center.x, p.center.y + p.radius + 0.25, 0.6);
-    t.scale.z = 0.25;
+    t.scale.z = 0.35;
     t.color = color_of("white", 0.8f);
     t.text = p.name;
     out.markers.push_back(t);
@@ -375,7 +375,7 @@ MarkerArray dynamic_markers(const World& w, const std::vector<RobotState>& robot
     out.markers.push_back(head);
     Marker name = make_marker(frame, stamp, "robot_names", id++, Marker::TEXT_VIEW_FACING);
     name.pose.position = point(r.pose.x, r.pose.y + rad + 0.3, 0.8);
-    name.scale.z = 0.3;
+    name.scale.z = 0.4;
     name.color = color_of("white");
     name.text = r.config.name;
     out.markers.push_back(name);
@@ -393,9 +393,9 @@ MarkerArray percept_markers(const std::vector<SeenObject>& seen, const Pose2D& r
   out.markers.push_back(clear);
 
   Marker rays = make_marker(frame, stamp, "rays", 0, Marker::LINE_LIST);
-  rays.scale.x = 0.02;
+  rays.scale.x = 0.05;
   Marker line_points = make_marker(frame, stamp, "line_points", 0, Marker::POINTS);
-  line_points.scale.x = line_points.scale.y = 0.1;
+  line_points.scale.x = line_points.scale.y = 0.12;
   line_points.color = color_of("magenta");
   int id = 0;
   for (const SeenObject& o : seen) {
@@ -412,13 +412,13 @@ MarkerArray percept_markers(const std::vector<SeenObject>& seen, const Pose2D& r
     out.markers.push_back(s);
     Marker t = make_marker(frame, stamp, "labels", id++, Marker::TEXT_VIEW_FACING);
     t.pose.position = point(p.x, p.y - 0.35, 0.7);
-    t.scale.z = 0.22;
+    t.scale.z = 0.35;
     t.color = color_of("yellow");
     t.text = o.membership_class;
     out.markers.push_back(t);
     rays.points.push_back(point(robot_pose.x, robot_pose.y, 0.3));
     rays.points.push_back(point(p.x, p.y, 0.3));
-    std_msgs::ColorRGBA c = object_color(o, 0.6f);
+    std_msgs::ColorRGBA c = object_color(o, 0.9f);
     rays.colors.push_back(c);
     rays.colors.push_back(c);
   }
