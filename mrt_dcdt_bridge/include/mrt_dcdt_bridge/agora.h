@@ -1,0 +1,115 @@
+// DCDT_Agora (manual §3.1, §3.3.1): hosts Members, owns the PostOffice and,
+// as system Members, the InnerLinkManager, the channels and the Finder.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <unordered_set>
+#include <vector>
+
+#include "mrt_dcdt_bridge/channel.h"
+#include "mrt_dcdt_bridge/config.h"
+#include "mrt_dcdt_bridge/member.h"
+#include "mrt_dcdt_bridge/post_office.h"
+
+namespace mrt::dcdt {
+
+class InnerLinkManager;
+class Finder;
+
+struct AgoraOptions {
+  bool network = false;         ///< NETWORK (channels, Finder) or STANDALONE
+  AgoraConfig config;           ///< NETWORK only (STANDALONE uses policy only)
+  std::string inner_dir;        ///< "" = $DCDT_INNER_DIR, else /tmp/dcdt-<uid>
+  bool inner_links = true;      ///< talk to the other Agoras of this machine
+  bool finder = true;           ///< NETWORK: discover Agoras by multicast
+  int finder_period_ms = 200;
+  int agora_id = 0;             ///< 0 = random
+  ChannelOptions channel;
+};
+
+struct AgoraStats {
+  uint64_t routed = 0, duplicates = 0, hop_limited = 0, inner_errors = 0;
+  int inner_peers = 0;
+  int finder_peers = 0;
+  std::vector<ChannelStats> channels;
+};
+
+/// Where a message entered this Agora.
+struct Source {
+  enum Kind { MEMBER, INNER, CHANNEL } kind = MEMBER;
+  Channel* channel = nullptr;
+};
+
+class Agora {
+ public:
+  /// STANDALONE Agora.
+  Agora();
+  /// NETWORK Agora configured by a file (throws mrt::common::ParseError).
+  explicit Agora(const char* config_file);
+  explicit Agora(const std::string& config_file);
+  explicit Agora(AgoraOptions options);
+  ~Agora();
+  Agora(const Agora&) = delete;
+  Agora& operator=(const Agora&) = delete;
+
+  void AddMember(Member* m);
+  /// Creates the Member's thread; it starts working in LetsWork (or at once
+  /// if LetsWork is already running).
+  void ActivateMember(Member* m);
+  /// Runs the active Members; returns when all are TERMINATING/TERMINATED or
+  /// one called Shutdown(). Members are joined and Close()d before returning.
+  void LetsWork();
+  void Shutdown();
+
+  int GetAgoraID() const { return agora_id_; }
+  bool IsNetwork() const { return options_.network; }
+  PostOffice& GetPostOffice() { return *post_office_; }
+  AgoraStats Stats();
+  const AgoraOptions& options() const { return options_; }
+
+  // --- used by Members and system Members ---
+  void Route(std::shared_ptr<Msg> msg, const Source& src);
+  int NextMemberId() { return ++member_counter_; }
+  uint64_t NextSeq() { return ++seq_counter_; }
+  void AddChannel(std::unique_ptr<Channel> c);
+  void NotifyStateChange();
+  /// Called by a Member's destructor.
+  void RemoveMember(Member* m);
+
+ private:
+  void Setup();
+  void StopNetwork();
+  bool SeenBefore(int32_t agora, uint64_t seq);
+
+  AgoraOptions options_;
+  int agora_id_ = 0;
+  std::unique_ptr<PostOffice> post_office_;
+  std::atomic<int> member_counter_{0};
+  std::atomic<uint64_t> seq_counter_{0};
+
+  std::mutex members_mutex_;
+  std::condition_variable members_cv_;
+  std::vector<Member*> members_;
+  bool running_ = false;
+  std::atomic<bool> stop_{false};  // read by the Member threads
+  std::atomic<bool> shutdown_{false};
+
+  std::mutex seen_mutex_;
+  std::unordered_set<uint64_t> seen_;
+  std::deque<uint64_t> seen_order_;
+
+  std::mutex channels_mutex_;
+  std::vector<std::unique_ptr<Channel>> channels_;
+  std::unique_ptr<InnerLinkManager> inner_;
+  std::unique_ptr<Finder> finder_;
+  std::atomic<uint64_t> routed_{0}, duplicates_{0}, hop_limited_{0};
+};
+
+}  // namespace mrt::dcdt

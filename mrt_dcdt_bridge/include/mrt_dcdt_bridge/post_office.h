@@ -1,0 +1,90 @@
+// The PostOffice (manual §3.1): subscriptions and per-Member mailboxes.
+// Three policies with the same delivery semantics (every subscriber whose
+// scope matches gets every message, in the order the PostOffice accepted
+// them) and different locking / buffering / dispatch strategies:
+//   SLWB     Single Lock With Buffer: the publishing thread fans the message
+//            out into each subscriber's FIFO buffer under the single lock.
+//   SLWDWCV  Single Lock With Dispatcher With Conditional Variable: the
+//            publisher appends to one central queue and signals a condition
+//            variable; a dispatcher thread (the MsgManager) fans out.
+//   SLWSM    Single Lock With Single Message: one message slot; a publisher
+//            waits until the slot is free, the dispatcher empties it. At most
+//            one message is in flight: back-pressure instead of buffering.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "mrt_dcdt_bridge/msg.h"
+
+namespace mrt::dcdt {
+
+using MsgPtr = std::shared_ptr<const Msg>;
+
+enum class PostOfficePolicy { SLWB, SLWDWCV, SLWSM };
+const char* PolicyName(PostOfficePolicy p);
+/// Parses "SLWB" / "SLWDWCV" / "SLWSM"; returns false otherwise.
+bool ParsePolicy(const std::string& s, PostOfficePolicy* out);
+
+/// One Member's queue of received messages (guarded by the PostOffice lock).
+struct MailBox {
+  int member_id = 0;
+  std::deque<MsgPtr> queue;
+  std::condition_variable cv;
+  uint64_t dropped = 0;  ///< messages discarded because the queue was full
+};
+
+class PostOffice {
+ public:
+  static constexpr size_t kMailBoxCapacity = 100000;
+
+  static std::unique_ptr<PostOffice> Create(PostOfficePolicy policy);
+  virtual ~PostOffice();
+
+  PostOfficePolicy policy() const { return policy_; }
+
+  void Register(MailBox* box);
+  void Unregister(MailBox* box);
+  void Subscribe(int member_id, int type, int scope_mask);
+  void Unsubscribe(int member_id, int type, int scope_mask);
+  void UnsubscribeAll(int member_id);
+  bool HasSubscriptions(int member_id);
+
+  /// Accepts a message for delivery. The producing Member (same agora id and
+  /// member id) never receives its own message.
+  virtual void Post(MsgPtr msg) = 0;
+
+  /// Pops the oldest message of a mailbox (nullptr when empty).
+  MsgPtr Pop(MailBox* box);
+  size_t Pending(MailBox* box);
+  /// Waits until the mailbox is non-empty, `stop` is set or the timeout
+  /// expires; returns the number of queued messages.
+  size_t WaitForMail(MailBox* box, const std::atomic<bool>* stop, std::chrono::milliseconds timeout);
+  /// Wakes every waiting Member (used at shutdown).
+  void WakeAll();
+
+  int agora_id = 0;  ///< set by the Agora; used to recognise own messages
+
+ protected:
+  explicit PostOffice(PostOfficePolicy p) : policy_(p) {}
+  /// Fans msg out into the matching mailboxes. Caller holds mutex_.
+  void DispatchLocked(const MsgPtr& msg);
+
+  std::mutex mutex_;  // the single lock
+  PostOfficePolicy policy_;
+
+ private:
+  std::map<int, MailBox*> boxes_;
+  std::map<int, std::map<int, int>> subs_;  // type -> member id -> scope mask
+};
+
+}  // namespace mrt::dcdt

@@ -1,0 +1,273 @@
+#include "mrt_dcdt_bridge/agora.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <random>
+
+#include "finder.h"
+#include "inner_link_manager.h"
+
+namespace mrt::dcdt {
+
+namespace {
+int RandomAgoraId() {
+  std::random_device rd;
+  uint32_t v = rd() ^ (static_cast<uint32_t>(::getpid()) << 16) ^
+               static_cast<uint32_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+  v &= 0x7fffffff;
+  return v == 0 ? 1 : static_cast<int>(v);
+}
+
+AgoraOptions NetworkOptions(const std::string& file) {
+  AgoraOptions o;
+  o.network = true;
+  o.config = LoadAgoraConfig(file);
+  return o;
+}
+}  // namespace
+
+Agora::Agora() : Agora(AgoraOptions{}) {}
+Agora::Agora(const char* config_file) : Agora(NetworkOptions(config_file ? config_file : "")) {}
+Agora::Agora(const std::string& config_file) : Agora(NetworkOptions(config_file)) {}
+Agora::Agora(AgoraOptions options) : options_(std::move(options)) { Setup(); }
+
+std::string DefaultInnerDir() {
+  if (const char* d = std::getenv("DCDT_INNER_DIR"); d && *d) return d;
+  return "/tmp/dcdt-" + std::to_string(::getuid());
+}
+
+void Agora::Setup() {
+  agora_id_ = options_.agora_id > 0 ? options_.agora_id : RandomAgoraId();
+  options_.channel.agora_id = agora_id_;
+  post_office_ = PostOffice::Create(options_.config.policy);
+  post_office_->agora_id = agora_id_;
+  if (options_.inner_links) {
+    if (options_.inner_dir.empty()) options_.inner_dir = DefaultInnerDir();
+    inner_ = std::make_unique<InnerLinkManager>(
+        options_.inner_dir, agora_id_, [this](std::shared_ptr<Msg> m) { Route(std::move(m), Source{Source::INNER, nullptr}); });
+    inner_->Start();
+  }
+  if (!options_.network) return;
+  auto rx = [this](std::shared_ptr<Msg> m, Channel* ch) { Route(std::move(m), Source{Source::CHANNEL, ch}); };
+  for (const auto& c : options_.config.channels) {
+    auto ch = c.kind == ChannelConfig::IP ? MakeIpChannel(c, options_.channel, rx)
+                                          : MakeSerialChannel(c, options_.channel, rx);
+    ch->Start();
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    channels_.push_back(std::move(ch));
+  }
+  if (options_.finder && options_.config.port > 0) {
+    finder_ = std::make_unique<Finder>(this, options_.config, options_.inner_dir, options_.finder_period_ms);
+    finder_->Start();
+  }
+}
+
+Agora::~Agora() {
+  Shutdown();
+  {
+    std::unique_lock<std::mutex> l(members_mutex_);
+    members_cv_.wait_for(l, std::chrono::seconds(10), [&] { return !running_; });
+  }
+  StopNetwork();
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (Member* m : members_) {
+    if (m->thread_.joinable()) m->thread_.join();
+    if (m->registered_) post_office_->Unregister(&m->mailbox_);
+    m->registered_ = false;
+    m->agora_ = nullptr;  // the Member may outlive its Agora
+  }
+  members_.clear();
+}
+
+void Agora::RemoveMember(Member* m) {
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (auto it = members_.begin(); it != members_.end(); ++it) {
+    if (*it != m) continue;
+    if (m->registered_) post_office_->Unregister(&m->mailbox_);
+    m->registered_ = false;
+    members_.erase(it);
+    break;
+  }
+}
+
+void Agora::StopNetwork() {
+  if (finder_) finder_->Stop();
+  std::vector<std::unique_ptr<Channel>> chans;
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    chans.swap(channels_);
+  }
+  for (auto& c : chans) c->Stop();
+  chans.clear();
+  if (inner_) inner_->Stop();
+  finder_.reset();
+  inner_.reset();
+}
+
+void Agora::AddMember(Member* m) {
+  if (!m) return;
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (Member* x : members_)
+    if (x == m) return;
+  m->agora_ = this;
+  m->member_id_ = NextMemberId();
+  m->mailbox_.member_id = m->member_id_;
+  post_office_->Register(&m->mailbox_);
+  m->registered_ = true;
+  m->state_ = MemberState::ADDED;
+  members_.push_back(m);
+}
+
+void Agora::ActivateMember(Member* m) {
+  bool start_now = false;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    if (!m || m->agora_ != this || m->state_ != MemberState::ADDED) return;
+    m->state_ = MemberState::ACTIVE;
+    start_now = running_;
+  }
+  if (start_now) {
+    m->Init();
+    std::lock_guard<std::mutex> l(members_mutex_);
+    m->state_ = MemberState::RUNNING;
+    m->thread_ = std::thread([this, m] { m->Run(&stop_); });
+  }
+}
+
+void Agora::LetsWork() {
+  std::vector<Member*> to_start;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    if (running_) return;
+    running_ = true;
+    for (Member* m : members_)
+      if (m->state_ == MemberState::ACTIVE) to_start.push_back(m);
+  }
+  // Init() of every Member first, so subscriptions exist before anyone shares.
+  for (Member* m : to_start) m->Init();
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    for (Member* m : to_start) {
+      m->state_ = MemberState::RUNNING;
+      m->thread_ = std::thread([this, m] { m->Run(&stop_); });
+    }
+  }
+  {
+    std::unique_lock<std::mutex> l(members_mutex_);
+    auto done = [&] {
+      if (shutdown_) return true;
+      for (Member* m : members_) {
+        auto s = m->state_.load();
+        if (s == MemberState::RUNNING || s == MemberState::ACTIVE) return false;
+      }
+      return true;
+    };
+    while (!done()) members_cv_.wait_for(l, std::chrono::milliseconds(100));
+  }
+  stop_ = true;
+  post_office_->WakeAll();
+  std::vector<Member*> all;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    all = members_;
+  }
+  for (Member* m : all)
+    if (m->thread_.joinable()) m->thread_.join();
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    running_ = false;
+  }
+  members_cv_.notify_all();
+}
+
+void Agora::Shutdown() {
+  shutdown_ = true;
+  stop_ = true;
+  NotifyStateChange();
+  if (post_office_) post_office_->WakeAll();
+}
+
+void Agora::NotifyStateChange() {
+  { std::lock_guard<std::mutex> l(members_mutex_); }
+  members_cv_.notify_all();
+}
+
+bool Agora::SeenBefore(int32_t agora, uint64_t seq) {
+  const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(agora)) << 32) | (seq & 0xffffffffu);
+  std::lock_guard<std::mutex> l(seen_mutex_);
+  if (!seen_.insert(key).second) return true;
+  seen_order_.push_back(key);
+  if (seen_order_.size() > 200000) {
+    seen_.erase(seen_order_.front());
+    seen_order_.pop_front();
+  }
+  return false;
+}
+
+void Agora::Route(std::shared_ptr<Msg> msg, const Source& src) {
+  auto& h = msg->mutable_header();
+  if (src.kind != Source::MEMBER) {
+    if (h.agora_id == agora_id_ || SeenBefore(h.agora_id, h.seq)) {
+      ++duplicates_;  // our own message came back, or a copy by another path
+      return;
+    }
+    if (src.kind == Source::CHANNEL) {
+      h.hops = static_cast<uint8_t>(h.hops + 1);
+      h.remote = src.channel->mode == ChannelMode::LINK;
+    }
+    if (h.hops > kMaxHops) {
+      ++hop_limited_;
+      return;
+    }
+  }
+  ++routed_;
+  MsgPtr m = std::move(msg);
+  post_office_->Post(m);
+  if (inner_ && src.kind != Source::INNER) inner_->Send(*m);
+  std::lock_guard<std::mutex> l(channels_mutex_);
+  for (auto& ch : channels_) {
+    if (ch.get() == src.channel || ch->Dead()) continue;
+    if (src.kind == Source::MEMBER ||
+        (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level))
+      ch->Send(m);
+  }
+}
+
+void Agora::AddChannel(std::unique_ptr<Channel> c) {
+  std::vector<std::unique_ptr<Channel>> dead;
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    for (auto it = channels_.begin(); it != channels_.end();) {
+      if ((*it)->Dead()) {
+        dead.push_back(std::move(*it));
+        it = channels_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (c) {
+      c->Start();
+      channels_.push_back(std::move(c));
+    }
+  }
+  for (auto& d : dead) d->Stop();
+}
+
+AgoraStats Agora::Stats() {
+  AgoraStats s;
+  s.routed = routed_;
+  s.duplicates = duplicates_;
+  s.hop_limited = hop_limited_;
+  if (inner_) {
+    s.inner_peers = inner_->Peers();
+    s.inner_errors = inner_->Errors();
+  }
+  if (finder_) s.finder_peers = finder_->Peers();
+  std::lock_guard<std::mutex> l(channels_mutex_);
+  for (auto& c : channels_) s.channels.push_back(c->Stats());
+  return s;
+}
+
+}  // namespace mrt::dcdt

@@ -1,0 +1,510 @@
+// Channel implementations: StreamLink (TCP or serial byte stream with
+// acknowledged, resendable guaranteed messages) and UdpLink (datagrams with
+// optional acknowledged retransmission). See README "Wire protocol".
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "mrt_dcdt_bridge/channel.h"
+#include "mrt_dcdt_bridge/frame.h"
+#include "net_util.h"
+
+namespace mrt::dcdt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kGiveUp = -2;
+constexpr size_t kMaxOutQueue = 200000;
+constexpr size_t kMaxUdpFrame = 60000;
+
+struct Counters {
+  std::atomic<uint64_t> sent{0}, received{0}, resent{0}, dropped{0}, errors{0}, reconnects{0};
+  std::atomic<bool> connected{false};
+  std::atomic<int> peer_agora{0};
+  void Fill(ChannelStats* s) const {
+    s->sent += sent;
+    s->received += received;
+    s->resent += resent;
+    s->dropped += dropped;
+    s->errors += errors;
+    s->reconnects += reconnects;
+    s->connected = s->connected || connected;
+    if (peer_agora) s->peer_agora = peer_agora;
+  }
+};
+
+// ---------------------------------------------------------------- StreamLink
+class StreamLink {
+ public:
+  /// Returns a connected fd, -1 to retry later, kGiveUp to end for good.
+  using ConnectFn = std::function<int(const std::atomic<bool>& stop)>;
+
+  StreamLink(ChannelOptions o, ConnectFn connect, Channel* owner, Channel::ReceiveFn rx, bool all_warranties)
+      : o_(o), connect_(std::move(connect)), owner_(owner), rx_(std::move(rx)), all_(all_warranties) {}
+  ~StreamLink() { Stop(); }
+
+  void Start() { thread_ = std::thread([this] { Loop(); }); }
+  void Stop() {
+    stop_ = true;
+    waker_.Wake();
+    if (thread_.joinable()) thread_.join();
+  }
+  void Send(const MsgPtr& m) {
+    {
+      std::lock_guard<std::mutex> l(mu_);
+      if (outq_.size() >= kMaxOutQueue) {
+        outq_.pop_front();
+        ++c.dropped;
+      }
+      outq_.push_back(m);
+    }
+    waker_.Wake();
+  }
+  bool dead() const { return dead_; }
+  Counters c;
+
+ private:
+  void Loop() {
+    while (!stop_) {
+      int fd = connect_(stop_);
+      if (fd == kGiveUp) break;
+      if (fd < 0) {
+        Sleep(o_.reconnect_ms);
+        continue;
+      }
+      ++c.reconnects;
+      c.connected = true;
+      Session(fd);
+      c.connected = false;
+      ::close(fd);
+    }
+    dead_ = true;
+  }
+
+  void Sleep(int ms) {
+    pollfd p{waker_.fd(), POLLIN, 0};
+    ::poll(&p, 1, ms);
+    waker_.Drain();
+  }
+
+  void Session(int fd) {
+    FrameDecoder dec;
+    bool peer_hello = false;
+    auto last_hello = Clock::now() - std::chrono::seconds(10);
+    std::vector<uint8_t> rbuf(65536), wbuf;
+    while (!stop_) {
+      if (!peer_hello && Clock::now() - last_hello > std::chrono::milliseconds(300)) {
+        auto h = EncodeHello(Hello{o_.agora_id, last_rx_});
+        if (!net::WriteAll(fd, h.data(), h.size())) return;
+        last_hello = Clock::now();
+      }
+      pollfd p[2] = {{fd, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
+      if (::poll(p, 2, 50) < 0 && errno != EINTR) return;
+      if (p[1].revents) waker_.Drain();
+      bool send_ack = false;
+      wbuf.clear();
+      if (p[0].revents & (POLLIN | POLLHUP | POLLERR)) {
+        ssize_t r = ::read(fd, rbuf.data(), rbuf.size());
+        if (r <= 0) {
+          if (r < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+          return;  // EOF or error: reconnect
+        }
+        dec.Feed(rbuf.data(), static_cast<size_t>(r));
+        while (auto f = dec.Next()) {
+          if (f->kind == FrameKind::HELLO) {
+            Hello h;
+            if (!DecodeHelloBody(f->body, &h)) continue;
+            if (h.agora_id != c.peer_agora) last_rx_ = 0;  // a new peer process: its link seqs restart
+            c.peer_agora = h.agora_id;
+            if (!peer_hello) {
+              // The peer may have missed our HELLO (serial): answer once more.
+              auto hb = EncodeHello(Hello{o_.agora_id, last_rx_});
+              wbuf.insert(wbuf.end(), hb.begin(), hb.end());
+            }
+            peer_hello = true;
+            std::lock_guard<std::mutex> l(mu_);
+            while (!unacked_.empty() && unacked_.front().first <= h.last_rx) unacked_.pop_front();
+            for (auto& [seq, bytes] : unacked_) {
+              wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
+              ++c.resent;
+            }
+          } else if (f->kind == FrameKind::MSG) {
+            MsgFrame mf;
+            if (!DecodeMsgBody(f->body, &mf)) {
+              ++c.errors;
+              continue;
+            }
+            if (mf.link_seq != 0) {
+              send_ack = true;
+              if (mf.link_seq <= last_rx_) continue;  // already delivered before a reconnection
+              last_rx_ = mf.link_seq;
+            }
+            ++c.received;
+            rx_(std::make_shared<Msg>(std::move(mf.msg)), owner_);
+          } else if (f->kind == FrameKind::ACK) {
+            uint64_t s;
+            if (!DecodeAckBody(f->body, &s)) continue;
+            std::lock_guard<std::mutex> l(mu_);
+            while (!unacked_.empty() && unacked_.front().first <= s) unacked_.pop_front();
+          }
+        }
+        c.errors += dec.errors() - counted_errors_;
+        counted_errors_ = dec.errors();
+      }
+      if (send_ack) {
+        auto a = EncodeAck(last_rx_);
+        wbuf.insert(wbuf.end(), a.begin(), a.end());
+      }
+      if (peer_hello) {
+        std::lock_guard<std::mutex> l(mu_);
+        while (!outq_.empty() && wbuf.size() < (4u << 20)) {
+          MsgPtr m = std::move(outq_.front());
+          outq_.pop_front();
+          const uint64_t seq = next_seq_++;
+          auto bytes = EncodeMsg(*m, seq);
+          wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
+          ++c.sent;
+          if (m->ReadDeliveryWarranty() == DCDT_DW_GUARANTEED) {
+            if (unacked_.size() >= o_.max_unacked) {
+              unacked_.pop_front();
+              ++c.dropped;
+            }
+            unacked_.emplace_back(seq, std::move(bytes));
+          }
+        }
+        if (!outq_.empty()) waker_.Wake();
+      }
+      if (!wbuf.empty() && !net::WriteAll(fd, wbuf.data(), wbuf.size())) return;
+    }
+  }
+
+  ChannelOptions o_;
+  ConnectFn connect_;
+  Channel* owner_;
+  Channel::ReceiveFn rx_;
+  [[maybe_unused]] bool all_;
+  std::atomic<bool> stop_{false}, dead_{false};
+  net::Waker waker_;
+  std::thread thread_;
+  std::mutex mu_;
+  std::deque<MsgPtr> outq_;
+  std::deque<std::pair<uint64_t, std::vector<uint8_t>>> unacked_;
+  uint64_t next_seq_ = 1;
+  uint64_t last_rx_ = 0;
+  uint64_t counted_errors_ = 0;
+};
+
+// ------------------------------------------------------------------ UdpLink
+class UdpLink {
+ public:
+  UdpLink(const ChannelConfig& cfg, ChannelOptions o, Channel* owner, Channel::ReceiveFn rx)
+      : cfg_(cfg), o_(o), owner_(owner), rx_(std::move(rx)) {}
+  ~UdpLink() { Stop(); }
+
+  void Start() {
+    net::MakeAddr(cfg_.remote_addr, cfg_.remote_port, &remote_);
+    thread_ = std::thread([this] { Loop(); });
+  }
+  void Stop() {
+    stop_ = true;
+    waker_.Wake();
+    if (thread_.joinable()) thread_.join();
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+  void Send(const MsgPtr& m) {
+    {
+      std::lock_guard<std::mutex> l(mu_);
+      if (outq_.size() >= kMaxOutQueue) {
+        outq_.pop_front();
+        ++c.dropped;
+      }
+      outq_.push_back(m);
+    }
+    waker_.Wake();
+  }
+  Counters c;
+
+ private:
+  bool Open() {
+    sockaddr_in a;
+    if (!net::MakeAddr(cfg_.local_addr, cfg_.local_port, &a)) return false;
+    int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) return false;
+    int one = 1, buf = 4 << 20;
+    setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &buf, sizeof buf);
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+      ::close(fd);
+      return false;
+    }
+    fd_ = fd;
+    return true;
+  }
+  void SendTo(const std::vector<uint8_t>& b) {
+    if (::sendto(fd_, b.data(), b.size(), 0, reinterpret_cast<const sockaddr*>(&remote_), sizeof remote_) < 0)
+      ++c.errors;
+  }
+
+  void Loop() {
+    while (!stop_ && !Open()) {
+      pollfd p{waker_.fd(), POLLIN, 0};
+      ::poll(&p, 1, 200);
+    }
+    std::vector<uint8_t> rbuf(65536);
+    while (!stop_) {
+      int timeout = 50;
+      pollfd p[2] = {{fd_, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
+      ::poll(p, 2, timeout);
+      if (p[1].revents) waker_.Drain();
+      if (p[0].revents & POLLIN) {
+        for (int k = 0; k < 256; ++k) {
+          sockaddr_in from{};
+          socklen_t fl = sizeof from;
+          ssize_t r = ::recvfrom(fd_, rbuf.data(), rbuf.size(), MSG_DONTWAIT, reinterpret_cast<sockaddr*>(&from), &fl);
+          if (r < 0) break;
+          if (from.sin_addr.s_addr != remote_.sin_addr.s_addr) {
+            ++c.errors;  // only the configured peer may talk on this channel
+            continue;
+          }
+          Frame f;
+          if (!DecodeDatagram(rbuf.data(), static_cast<size_t>(r), &f)) {
+            ++c.errors;
+            continue;
+          }
+          if (f.kind == FrameKind::MSG) {
+            MsgFrame mf;
+            if (!DecodeMsgBody(f.body, &mf)) {
+              ++c.errors;
+              continue;
+            }
+            if (mf.link_seq != 0) {
+              auto a = EncodeAck(mf.link_seq);
+              ::sendto(fd_, a.data(), a.size(), 0, reinterpret_cast<sockaddr*>(&from), fl);
+            }
+            ++c.received;
+            c.peer_agora = mf.msg.ReadAgoraID();
+            rx_(std::make_shared<Msg>(std::move(mf.msg)), owner_);  // copies are dropped by the Agora
+          } else if (f.kind == FrameKind::ACK) {
+            uint64_t s;
+            if (DecodeAckBody(f.body, &s)) pending_.erase(s);
+          }
+        }
+      }
+      std::deque<MsgPtr> batch;
+      {
+        std::lock_guard<std::mutex> l(mu_);
+        batch.swap(outq_);
+      }
+      const auto now = Clock::now();
+      for (auto& m : batch) {
+        const bool retx = m->ReadDeliveryWarranty() == DCDT_DW_RETRANSMIT;
+        const uint64_t seq = retx ? next_seq_++ : 0;
+        auto b = EncodeMsg(*m, seq);
+        SendTo(b);
+        ++c.sent;
+        if (retx) pending_[seq] = Pending{std::move(b), 1, now + std::chrono::milliseconds(o_.retransmit_interval_ms)};
+      }
+      for (auto it = pending_.begin(); it != pending_.end();) {
+        if (it->second.due > now) {
+          ++it;
+          continue;
+        }
+        if (it->second.tries >= o_.retransmit_tries) {
+          ++c.dropped;
+          it = pending_.erase(it);
+          continue;
+        }
+        SendTo(it->second.bytes);
+        ++c.resent;
+        ++it->second.tries;
+        it->second.due = now + std::chrono::milliseconds(o_.retransmit_interval_ms);
+        ++it;
+      }
+      c.connected = true;
+    }
+  }
+
+  struct Pending {
+    std::vector<uint8_t> bytes;
+    int tries;
+    Clock::time_point due;
+  };
+  ChannelConfig cfg_;
+  ChannelOptions o_;
+  Channel* owner_;
+  Channel::ReceiveFn rx_;
+  sockaddr_in remote_{};
+  int fd_ = -1;
+  std::atomic<bool> stop_{false};
+  net::Waker waker_;
+  std::thread thread_;
+  std::mutex mu_;
+  std::deque<MsgPtr> outq_;
+  std::map<uint64_t, Pending> pending_;
+  uint64_t next_seq_ = 1;
+};
+
+// ---------------------------------------------------------------- channels
+class IpChannel : public Channel {
+ public:
+  IpChannel(const ChannelConfig& cfg, const ChannelOptions& o, ReceiveFn rx) : cfg_(cfg) {
+    mode = cfg.mode;
+    level = cfg.level;
+    const bool dial = std::make_pair(ntohl(Addr(cfg.local_addr)), cfg.local_port) <
+                      std::make_pair(ntohl(Addr(cfg.remote_addr)), cfg.remote_port);
+    StreamLink::ConnectFn fn;
+    if (dial) {
+      fn = [this](const std::atomic<bool>&) {
+        return net::TcpConnect(cfg_.local_addr, cfg_.remote_addr, cfg_.remote_port, 200);
+      };
+    } else {
+      fn = [this](const std::atomic<bool>&) {
+        if (listen_fd_ < 0) listen_fd_ = net::TcpListen(cfg_.local_addr, cfg_.local_port);
+        if (listen_fd_ < 0) return -1;
+        sockaddr_in peer{};
+        int fd = net::TcpAccept(listen_fd_, 100, &peer);
+        if (fd >= 0 && peer.sin_addr.s_addr != Addr(cfg_.remote_addr)) {
+          ::close(fd);  // only the configured peer may connect
+          return -1;
+        }
+        return fd;
+      };
+    }
+    stream_ = std::make_unique<StreamLink>(o, fn, this, rx, false);
+    udp_ = std::make_unique<UdpLink>(cfg, o, this, rx);
+  }
+  ~IpChannel() override { Stop(); }
+  void Start() override {
+    stream_->Start();
+    udp_->Start();
+  }
+  void Stop() override {
+    stream_->Stop();
+    udp_->Stop();
+    if (listen_fd_ >= 0) ::close(listen_fd_);
+    listen_fd_ = -1;
+  }
+  void Send(const MsgPtr& m) override {
+    if (m->ReadDeliveryWarranty() == DCDT_DW_GUARANTEED ||
+        static_cast<size_t>(m->ReadPayloadLen()) + kMsgBodyFixed + kFrameOverhead > kMaxUdpFrame)
+      stream_->Send(m);  // too big for a datagram: the stream carries it
+    else
+      udp_->Send(m);
+  }
+  ChannelStats Stats() const override {
+    ChannelStats s;
+    s.name = std::string(mode == ChannelMode::LINK ? "ip link " : "ip bridge ") + cfg_.local_addr + ":" +
+             std::to_string(cfg_.local_port) + " -> " + cfg_.remote_addr + ":" + std::to_string(cfg_.remote_port);
+    stream_->c.Fill(&s);
+    udp_->c.Fill(&s);
+    s.connected = stream_->c.connected;
+    return s;
+  }
+
+ private:
+  static in_addr_t Addr(const std::string& ip) {
+    sockaddr_in a;
+    net::MakeAddr(ip, 0, &a);
+    return a.sin_addr.s_addr;
+  }
+  ChannelConfig cfg_;
+  int listen_fd_ = -1;
+  std::unique_ptr<StreamLink> stream_;
+  std::unique_ptr<UdpLink> udp_;
+};
+
+class StreamChannel : public Channel {
+ public:
+  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx)
+      : name_(std::move(name)) {
+    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), true);
+  }
+  ~StreamChannel() override { Stop(); }
+  void Start() override { stream_->Start(); }
+  void Stop() override { stream_->Stop(); }
+  void Send(const MsgPtr& m) override { stream_->Send(m); }
+  bool Dead() const override { return stream_->dead(); }
+  ChannelStats Stats() const override {
+    ChannelStats s;
+    s.name = name_;
+    stream_->c.Fill(&s);
+    return s;
+  }
+
+ private:
+  std::string name_;
+  std::unique_ptr<StreamLink> stream_;
+};
+
+int OpenSerial(const std::string& dev) {
+  int fd = ::open(dev.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  if (::isatty(fd)) {
+    termios t{};
+    if (tcgetattr(fd, &t) == 0) {
+      cfmakeraw(&t);
+      cfsetispeed(&t, B115200);
+      cfsetospeed(&t, B115200);
+      t.c_cflag |= CLOCAL | CREAD;
+      tcsetattr(fd, TCSANOW, &t);
+    }
+  }
+  return fd;
+}
+
+}  // namespace
+
+std::unique_ptr<Channel> MakeIpChannel(const ChannelConfig& c, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  return std::make_unique<IpChannel>(c, o, std::move(rx));
+}
+
+std::unique_ptr<Channel> MakeSerialChannel(const ChannelConfig& c, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  std::string dev = c.device;
+  auto ch = std::make_unique<StreamChannel>(
+      std::string(c.mode == ChannelMode::LINK ? "ser link " : "ser bridge ") + dev, o,
+      [dev](const std::atomic<bool>&) { return OpenSerial(dev); }, std::move(rx));
+  ch->mode = c.mode;
+  ch->level = c.level;
+  return ch;
+}
+
+std::unique_ptr<Channel> MakeDialledTcpChannel(const std::string& addr, int port, const ChannelOptions& o,
+                                               Channel::ReceiveFn rx) {
+  auto used = std::make_shared<bool>(false);
+  auto ch = std::make_unique<StreamChannel>(
+      "finder -> " + addr + ":" + std::to_string(port), o,
+      [addr, port, used](const std::atomic<bool>&) {
+        if (*used) return kGiveUp;
+        *used = true;
+        int fd = net::TcpConnect("", addr, port, 500);
+        return fd < 0 ? kGiveUp : fd;
+      },
+      std::move(rx));
+  return ch;
+}
+
+std::unique_ptr<Channel> MakeAcceptedTcpChannel(int fd, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  auto used = std::make_shared<bool>(false);
+  return std::make_unique<StreamChannel>(
+      "finder <- accepted", o,
+      [fd, used](const std::atomic<bool>&) {
+        if (*used) return kGiveUp;
+        *used = true;
+        return fd;
+      },
+      std::move(rx));
+}
+
+}  // namespace mrt::dcdt

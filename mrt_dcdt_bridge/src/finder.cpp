@@ -1,0 +1,116 @@
+#include "finder.h"
+
+#include <arpa/inet.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "mrt_dcdt_bridge/agora.h"
+#include "mrt_dcdt_bridge/frame.h"
+
+namespace mrt::dcdt {
+
+using Clock = std::chrono::steady_clock;
+
+Finder::Finder(Agora* agora, const AgoraConfig& cfg, const std::string& inner_dir, int period_ms)
+    : agora_(agora), cfg_(cfg), period_ms_(period_ms > 0 ? period_ms : 200) {
+  char host[256] = {0};
+  ::gethostname(host, sizeof host - 1);
+  // Agoras sharing host and inner-link directory already talk through inner links.
+  host_key_ = std::string(host) + ":" +
+              (agora->options().inner_links ? inner_dir : "agora" + std::to_string(agora->GetAgoraID()));
+}
+
+Finder::~Finder() { Stop(); }
+
+void Finder::Start() {
+  sockaddr_in group;
+  net::MakeAddr(cfg_.multicast_addr, cfg_.port, &group);
+  in_addr local{};
+  inet_pton(AF_INET, cfg_.local_addr.c_str(), &local);
+  mcast_fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  int one = 1;
+  setsockopt(mcast_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  setsockopt(mcast_fd_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);
+  if (::bind(mcast_fd_, reinterpret_cast<sockaddr*>(&group), sizeof group) != 0) {
+    ::close(mcast_fd_);
+    mcast_fd_ = -1;
+  } else {
+    ip_mreq mreq{};
+    mreq.imr_multiaddr = group.sin_addr;
+    mreq.imr_interface = local;
+    setsockopt(mcast_fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &mreq, sizeof mreq);
+    setsockopt(mcast_fd_, IPPROTO_IP, IP_MULTICAST_IF, &local, sizeof local);
+    unsigned char loop = 1;
+    // A loopback Agora keeps its announcements on this host (TTL 0).
+    unsigned char ttl = (ntohl(local.s_addr) >> 24) == 127 ? 0 : 1;
+    setsockopt(mcast_fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop);
+    setsockopt(mcast_fd_, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl);
+  }
+  listen_fd_ = net::TcpListen(cfg_.local_addr, 0);
+  thread_ = std::thread([this] { Loop(); });
+}
+
+void Finder::Stop() {
+  stop_ = true;
+  waker_.Wake();
+  if (thread_.joinable()) thread_.join();
+  if (mcast_fd_ >= 0) ::close(mcast_fd_);
+  if (listen_fd_ >= 0) ::close(listen_fd_);
+  mcast_fd_ = listen_fd_ = -1;
+}
+
+int Finder::Peers() {
+  std::lock_guard<std::mutex> l(mutex_);
+  int n = 0;
+  const auto now = Clock::now();
+  for (auto& [id, t] : seen_)
+    if (now - t < std::chrono::seconds(3)) ++n;
+  return n;
+}
+
+void Finder::Loop() {
+  sockaddr_in group;
+  net::MakeAddr(cfg_.multicast_addr, cfg_.port, &group);
+  Beacon me{agora_->GetAgoraID(), host_key_, cfg_.local_addr,
+            static_cast<uint16_t>(listen_fd_ >= 0 ? net::BoundPort(listen_fd_) : 0)};
+  const auto beacon = EncodeBeacon(me);
+  auto next_beacon = Clock::now();
+  auto rx = [a = agora_](std::shared_ptr<Msg> m, Channel* ch) { a->Route(std::move(m), Source{Source::CHANNEL, ch}); };
+  std::vector<uint8_t> buf(2048);
+  while (!stop_) {
+    if (Clock::now() >= next_beacon && mcast_fd_ >= 0) {
+      ::sendto(mcast_fd_, beacon.data(), beacon.size(), 0, reinterpret_cast<sockaddr*>(&group), sizeof group);
+      next_beacon = Clock::now() + std::chrono::milliseconds(period_ms_);
+      agora_->AddChannel(nullptr);  // collects channels whose connection ended
+    }
+    pollfd p[3] = {{mcast_fd_, POLLIN, 0}, {listen_fd_, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
+    ::poll(p, 3, 50);
+    if (p[2].revents) waker_.Drain();
+    if (mcast_fd_ >= 0 && (p[0].revents & POLLIN)) {
+      ssize_t r = ::recv(mcast_fd_, buf.data(), buf.size(), MSG_DONTWAIT);
+      Frame f;
+      Beacon b;
+      if (r > 0 && DecodeDatagram(buf.data(), static_cast<size_t>(r), &f) && f.kind == FrameKind::BEACON &&
+          DecodeBeaconBody(f.body, &b) && b.agora_id != me.agora_id && b.host_key != host_key_) {
+        bool dial = false;
+        {
+          std::lock_guard<std::mutex> l(mutex_);
+          seen_[b.agora_id] = Clock::now();
+          // The Agora with the smaller id dials; the other accepts.
+          if (me.agora_id < b.agora_id && !dialled_[b.agora_id] && b.tcp_port != 0) dial = dialled_[b.agora_id] = true;
+        }
+        if (dial) {
+          auto ch = MakeDialledTcpChannel(b.tcp_addr, b.tcp_port, agora_->options().channel, rx);
+          agora_->AddChannel(std::move(ch));
+        }
+      }
+    }
+    if (listen_fd_ >= 0 && (p[1].revents & POLLIN)) {
+      int fd = net::TcpAccept(listen_fd_, 0, nullptr);
+      if (fd >= 0) agora_->AddChannel(MakeAcceptedTcpChannel(fd, agora_->options().channel, rx));
+    }
+  }
+}
+
+}  // namespace mrt::dcdt

@@ -1,0 +1,141 @@
+#include "inner_link_manager.h"
+
+#include <dirent.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+#include "mrt_dcdt_bridge/frame.h"
+
+namespace mrt::dcdt {
+
+namespace {
+int64_t NowMs() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+bool MakeUnix(const std::string& path, sockaddr_un* a) {
+  *a = sockaddr_un{};
+  a->sun_family = AF_UNIX;
+  if (path.size() >= sizeof(a->sun_path)) return false;
+  std::memcpy(a->sun_path, path.c_str(), path.size() + 1);
+  return true;
+}
+}  // namespace
+
+InnerLinkManager::InnerLinkManager(std::string dir, int agora_id, ReceiveFn rx)
+    : dir_(std::move(dir)), agora_id_(agora_id), rx_(std::move(rx)) {}
+
+InnerLinkManager::~InnerLinkManager() { Stop(); }
+
+void InnerLinkManager::Start() {
+  ::mkdir(dir_.c_str(), 0700);
+  path_ = dir_ + "/" + std::to_string(agora_id_) + ".sock";
+  sockaddr_un a;
+  if (!MakeUnix(path_, &a)) {
+    ++errors_;
+    return;
+  }
+  fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  int buf = 4 << 20;
+  setsockopt(fd_, SOL_SOCKET, SO_SNDBUF, &buf, sizeof buf);
+  setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buf, sizeof buf);
+  ::unlink(path_.c_str());
+  if (::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+    ++errors_;
+    ::close(fd_);
+    fd_ = -1;
+    return;
+  }
+  timeval tv{0, 200000};  // a stuck peer delays a sender at most 200 ms
+  setsockopt(fd_, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
+  RefreshPeers(true);
+  thread_ = std::thread([this] { Loop(); });
+}
+
+void InnerLinkManager::Stop() {
+  stop_ = true;
+  waker_.Wake();
+  if (thread_.joinable()) thread_.join();
+  if (fd_ >= 0) {
+    ::close(fd_);
+    ::unlink(path_.c_str());
+    fd_ = -1;
+  }
+}
+
+void InnerLinkManager::RefreshPeers(bool force) {
+  std::lock_guard<std::mutex> l(peers_mutex_);
+  const int64_t now = NowMs();
+  if (!force && now - peers_time_ < 100) return;
+  peers_time_ = now;
+  peers_.clear();
+  DIR* d = ::opendir(dir_.c_str());
+  if (!d) return;
+  const std::string self = std::to_string(agora_id_) + ".sock";
+  while (dirent* e = ::readdir(d)) {
+    std::string n = e->d_name;
+    if (n.size() > 5 && n.compare(n.size() - 5, 5, ".sock") == 0 && n != self) peers_.push_back(dir_ + "/" + n);
+  }
+  ::closedir(d);
+}
+
+int InnerLinkManager::Peers() {
+  RefreshPeers(false);
+  std::lock_guard<std::mutex> l(peers_mutex_);
+  return static_cast<int>(peers_.size());
+}
+
+void InnerLinkManager::Send(const Msg& msg) {
+  if (fd_ < 0) return;
+  RefreshPeers(false);
+  std::vector<std::string> peers;
+  {
+    std::lock_guard<std::mutex> l(peers_mutex_);
+    peers = peers_;
+  }
+  if (peers.empty()) return;
+  auto bytes = EncodeMsg(msg, 0);
+  for (const auto& p : peers) {
+    sockaddr_un a;
+    if (!MakeUnix(p, &a)) continue;
+    if (::sendto(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL, reinterpret_cast<sockaddr*>(&a), sizeof a) < 0) {
+      if (errno == ECONNREFUSED) {
+        ::unlink(p.c_str());  // a socket file left by a dead Agora
+        RefreshPeers(true);
+      } else if (errno != ENOENT) {
+        ++errors_;
+      }
+    }
+  }
+}
+
+void InnerLinkManager::Loop() {
+  std::vector<uint8_t> buf(kMaxBody + kFrameOverhead);
+  while (!stop_) {
+    pollfd p[2] = {{fd_, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
+    ::poll(p, 2, 200);
+    if (p[1].revents) waker_.Drain();
+    if (!(p[0].revents & POLLIN)) continue;
+    for (int k = 0; k < 1024; ++k) {
+      ssize_t r = ::recv(fd_, buf.data(), buf.size(), MSG_DONTWAIT);
+      if (r < 0) break;
+      Frame f;
+      MsgFrame mf;
+      if (!DecodeDatagram(buf.data(), static_cast<size_t>(r), &f) || f.kind != FrameKind::MSG ||
+          !DecodeMsgBody(f.body, &mf)) {
+        ++errors_;
+        continue;
+      }
+      rx_(std::make_shared<Msg>(std::move(mf.msg)));
+    }
+  }
+}
+
+}  // namespace mrt::dcdt

@@ -1,0 +1,176 @@
+#include "mrt_dcdt_bridge/post_office.h"
+
+namespace mrt::dcdt {
+
+const char* PolicyName(PostOfficePolicy p) {
+  switch (p) {
+    case PostOfficePolicy::SLWB: return "SLWB";
+    case PostOfficePolicy::SLWDWCV: return "SLWDWCV";
+    case PostOfficePolicy::SLWSM: return "SLWSM";
+  }
+  return "?";
+}
+
+bool ParsePolicy(const std::string& s, PostOfficePolicy* out) {
+  if (s == "SLWB") *out = PostOfficePolicy::SLWB;
+  else if (s == "SLWDWCV") *out = PostOfficePolicy::SLWDWCV;
+  else if (s == "SLWSM") *out = PostOfficePolicy::SLWSM;
+  else return false;
+  return true;
+}
+
+PostOffice::~PostOffice() = default;
+
+void PostOffice::Register(MailBox* box) {
+  std::lock_guard<std::mutex> l(mutex_);
+  boxes_[box->member_id] = box;
+}
+
+void PostOffice::Unregister(MailBox* box) {
+  std::lock_guard<std::mutex> l(mutex_);
+  boxes_.erase(box->member_id);
+  for (auto& [type, m] : subs_) m.erase(box->member_id);
+}
+
+void PostOffice::Subscribe(int member_id, int type, int scope_mask) {
+  std::lock_guard<std::mutex> l(mutex_);
+  subs_[type][member_id] |= (scope_mask & DCDT_ALL_MSG);
+}
+
+void PostOffice::Unsubscribe(int member_id, int type, int scope_mask) {
+  std::lock_guard<std::mutex> l(mutex_);
+  auto it = subs_.find(type);
+  if (it == subs_.end()) return;
+  auto jt = it->second.find(member_id);
+  if (jt == it->second.end()) return;
+  jt->second &= ~scope_mask;
+  if (jt->second == 0) it->second.erase(jt);
+}
+
+void PostOffice::UnsubscribeAll(int member_id) {
+  std::lock_guard<std::mutex> l(mutex_);
+  for (auto& [type, m] : subs_) m.erase(member_id);
+}
+
+bool PostOffice::HasSubscriptions(int member_id) {
+  std::lock_guard<std::mutex> l(mutex_);
+  for (auto& [type, m] : subs_)
+    if (m.count(member_id)) return true;
+  return false;
+}
+
+void PostOffice::DispatchLocked(const MsgPtr& msg) {
+  auto it = subs_.find(msg->ReadType());
+  if (it == subs_.end()) return;
+  const int scope = msg->header().remote ? DCDT_REMOTE_MSG : DCDT_LOCAL_MSG;
+  const bool own_agora = msg->ReadAgoraID() == agora_id;
+  for (const auto& [member, mask] : it->second) {
+    if (!(mask & scope)) continue;
+    if (own_agora && member == msg->ReadMemberID()) continue;  // never to its producer
+    auto b = boxes_.find(member);
+    if (b == boxes_.end()) continue;
+    MailBox* box = b->second;
+    if (box->queue.size() >= kMailBoxCapacity) {
+      box->queue.pop_front();
+      ++box->dropped;
+    }
+    box->queue.push_back(msg);
+    box->cv.notify_one();
+  }
+}
+
+MsgPtr PostOffice::Pop(MailBox* box) {
+  std::lock_guard<std::mutex> l(mutex_);
+  if (box->queue.empty()) return nullptr;
+  MsgPtr m = std::move(box->queue.front());
+  box->queue.pop_front();
+  return m;
+}
+
+size_t PostOffice::Pending(MailBox* box) {
+  std::lock_guard<std::mutex> l(mutex_);
+  return box->queue.size();
+}
+
+size_t PostOffice::WaitForMail(MailBox* box, const std::atomic<bool>* stop, std::chrono::milliseconds timeout) {
+  std::unique_lock<std::mutex> l(mutex_);
+  box->cv.wait_for(l, timeout, [&] { return !box->queue.empty() || (stop && stop->load()); });
+  return box->queue.size();
+}
+
+void PostOffice::WakeAll() {
+  std::lock_guard<std::mutex> l(mutex_);
+  for (auto& [id, box] : boxes_) box->cv.notify_all();
+}
+
+namespace {
+
+// Single Lock With Buffer: the publisher fans out under the lock.
+class SlwbPostOffice : public PostOffice {
+ public:
+  SlwbPostOffice() : PostOffice(PostOfficePolicy::SLWB) {}
+  void Post(MsgPtr msg) override {
+    std::lock_guard<std::mutex> l(mutex_);
+    DispatchLocked(msg);
+  }
+};
+
+// Base of the two dispatcher policies: a MsgManager thread fans out.
+class DispatcherPostOffice : public PostOffice {
+ public:
+  DispatcherPostOffice(PostOfficePolicy p, size_t capacity) : PostOffice(p), capacity_(capacity) {
+    thread_ = std::thread([this] { Loop(); });
+  }
+  ~DispatcherPostOffice() override {
+    {
+      std::lock_guard<std::mutex> l(mutex_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+  }
+  void Post(MsgPtr msg) override {
+    std::unique_lock<std::mutex> l(mutex_);
+    // SLWSM: wait for the single slot (bounded wait; a stopped office drops).
+    space_cv_.wait(l, [&] { return queue_.size() < capacity_ || stop_; });
+    if (stop_) return;
+    queue_.push_back(std::move(msg));
+    cv_.notify_one();
+  }
+
+ private:
+  void Loop() {
+    std::unique_lock<std::mutex> l(mutex_);
+    while (true) {
+      cv_.wait(l, [&] { return !queue_.empty() || stop_; });
+      if (stop_ && queue_.empty()) return;
+      while (!queue_.empty()) {
+        MsgPtr m = std::move(queue_.front());
+        queue_.pop_front();
+        DispatchLocked(m);
+      }
+      space_cv_.notify_all();
+    }
+  }
+  size_t capacity_;
+  std::deque<MsgPtr> queue_;
+  std::condition_variable cv_, space_cv_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+}  // namespace
+
+std::unique_ptr<PostOffice> PostOffice::Create(PostOfficePolicy policy) {
+  switch (policy) {
+    case PostOfficePolicy::SLWDWCV:
+      return std::make_unique<DispatcherPostOffice>(policy, kMailBoxCapacity);
+    case PostOfficePolicy::SLWSM:
+      return std::make_unique<DispatcherPostOffice>(policy, 1);
+    case PostOfficePolicy::SLWB:
+    default:
+      return std::make_unique<SlwbPostOffice>();
+  }
+}
+
+}  // namespace mrt::dcdt

@@ -1,0 +1,173 @@
+// Wire protocol: golden bytes, round trips, resynchronisation, rejection.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "mrt_dcdt_bridge/frame.h"
+
+using namespace mrt::dcdt;
+
+namespace {
+
+Msg Sample() {
+  Msg m(MSG_FROM_VISION, 3, 0x01020304, DCDT_DW_RETRANSMIT);
+  auto& h = m.mutable_header();
+  h.priority = 5;
+  h.hops = 2;
+  h.remote = true;
+  h.creation_time = 0x0102030405060708LL;
+  h.seq = 42;
+  m.SetPayload("hi", 2);
+  return m;
+}
+
+TEST(Frame, Crc32MatchesTheIeeeCheckValue) {
+  const char* s = "123456789";  // the standard CRC-32 check value
+  EXPECT_EQ(Crc32(reinterpret_cast<const uint8_t*>(s), 9), 0xCBF43926u);
+}
+
+TEST(Frame, MsgGoldenBytes) {
+  auto b = EncodeMsg(Sample(), 9);
+  // Written by hand from the README table.
+  const std::vector<uint8_t> head = {
+      0x44, 0x43, 0x01, 0x01,                          // magic "DC", version 1, kind MSG
+      0x00, 0x00, 0x00, 46,                            // body length 44 + 2
+      0x00, 0x00, 0x00, 18,                            // type MSG_FROM_VISION
+      0x00, 0x00, 0x00, 3,                             // member id
+      0x01, 0x02, 0x03, 0x04,                          // agora id
+      5, 1, 2, 1,                                      // priority, warranty, hops, flags(remote)
+      0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07, 0x08,  // creation time
+      0, 0, 0, 0, 0, 0, 0, 42,                         // origin seq
+      0, 0, 0, 0, 0, 0, 0, 9,                          // link seq
+      0, 0, 0, 2,                                      // payload length
+      'h', 'i'};
+  ASSERT_EQ(b.size(), head.size() + 4);
+  EXPECT_TRUE(std::equal(head.begin(), head.end(), b.begin()));
+  const uint32_t crc = Crc32(b.data(), head.size());
+  EXPECT_EQ(b[head.size()], crc >> 24);
+  EXPECT_EQ(b.back(), crc & 0xFF);
+}
+
+TEST(Frame, MsgRoundTrip) {
+  Msg in = Sample();
+  auto b = EncodeMsg(in, 9);
+  Frame f;
+  ASSERT_TRUE(DecodeDatagram(b.data(), b.size(), &f));
+  ASSERT_EQ(f.kind, FrameKind::MSG);
+  MsgFrame out;
+  ASSERT_TRUE(DecodeMsgBody(f.body, &out));
+  EXPECT_EQ(out.link_seq, 9u);
+  const auto& h = out.msg.header();
+  EXPECT_EQ(h.type, 18);
+  EXPECT_EQ(h.member_id, 3);
+  EXPECT_EQ(h.agora_id, 0x01020304);
+  EXPECT_EQ(h.priority, 5);
+  EXPECT_EQ(h.warranty, DCDT_DW_RETRANSMIT);
+  EXPECT_EQ(h.hops, 2);
+  EXPECT_TRUE(h.remote);
+  EXPECT_EQ(h.creation_time, 0x0102030405060708LL);
+  EXPECT_EQ(h.seq, 42u);
+  EXPECT_EQ(out.msg.PayloadString(), "hi");
+  EXPECT_EQ(static_cast<const char*>(out.msg.GetPayload())[2], '\0');  // NUL after the payload
+}
+
+TEST(Frame, ControlFramesRoundTrip) {
+  Frame f;
+  auto a = EncodeAck(123456789012345ull);
+  ASSERT_TRUE(DecodeDatagram(a.data(), a.size(), &f));
+  uint64_t s;
+  ASSERT_TRUE(DecodeAckBody(f.body, &s));
+  EXPECT_EQ(s, 123456789012345ull);
+  auto h = EncodeHello(Hello{77, 5});
+  ASSERT_TRUE(DecodeDatagram(h.data(), h.size(), &f));
+  Hello hh;
+  ASSERT_TRUE(DecodeHelloBody(f.body, &hh));
+  EXPECT_EQ(hh.agora_id, 77);
+  EXPECT_EQ(hh.last_rx, 5u);
+  auto b = EncodeBeacon(Beacon{12, "host:/tmp/x", "127.0.0.1", 4321});
+  ASSERT_TRUE(DecodeDatagram(b.data(), b.size(), &f));
+  Beacon bb;
+  ASSERT_TRUE(DecodeBeaconBody(f.body, &bb));
+  EXPECT_EQ(bb.agora_id, 12);
+  EXPECT_EQ(bb.host_key, "host:/tmp/x");
+  EXPECT_EQ(bb.tcp_addr, "127.0.0.1");
+  EXPECT_EQ(bb.tcp_port, 4321);
+}
+
+TEST(Frame, CorruptedOrTruncatedDatagramsAreRejected) {
+  auto b = EncodeMsg(Sample());
+  Frame f;
+  for (size_t i = 0; i < b.size(); ++i) {
+    auto c = b;
+    c[i] ^= 0x10;
+    EXPECT_FALSE(DecodeDatagram(c.data(), c.size(), &f)) << "flipped byte " << i;
+  }
+  EXPECT_FALSE(DecodeDatagram(b.data(), b.size() - 1, &f));
+  auto v2 = b;
+  v2[2] = 2;  // unknown version
+  EXPECT_FALSE(DecodeDatagram(v2.data(), v2.size(), &f));
+}
+
+TEST(Frame, OversizeLengthIsRejectedWithoutAllocating) {
+  std::vector<uint8_t> b = {0x44, 0x43, 1, 1, 0xFF, 0xFF, 0xFF, 0xFF};
+  FrameDecoder d;
+  d.Feed(b.data(), b.size());
+  EXPECT_FALSE(d.Next().has_value());
+  EXPECT_GE(d.errors(), 1u);
+  EXPECT_LT(d.buffered(), 8u);
+}
+
+TEST(Frame, StreamDecoderResynchronisesAfterGarbageAndSplits) {
+  std::vector<uint8_t> stream = {'x', 'y', 0x44, 0x00};  // garbage, including a false magic start
+  auto m1 = EncodeMsg(Sample(), 1);
+  auto m2 = EncodeMsg(Sample(), 2);
+  auto bad = EncodeMsg(Sample(), 3);
+  bad[20] ^= 1;  // CRC mismatch
+  stream.insert(stream.end(), m1.begin(), m1.end());
+  stream.insert(stream.end(), bad.begin(), bad.end());
+  stream.insert(stream.end(), m2.begin(), m2.end());
+  FrameDecoder d;
+  std::vector<uint64_t> seqs;
+  for (size_t i = 0; i < stream.size(); i += 7) {  // fed in odd-sized pieces
+    d.Feed(stream.data() + i, std::min<size_t>(7, stream.size() - i));
+    while (auto f = d.Next()) {
+      MsgFrame mf;
+      ASSERT_TRUE(DecodeMsgBody(f->body, &mf));
+      seqs.push_back(mf.link_seq);
+    }
+  }
+  EXPECT_EQ(seqs, (std::vector<uint64_t>{1, 2}));
+  EXPECT_GE(d.errors(), 2u);
+}
+
+TEST(Frame, BodyWithWrongPayloadLengthIsRejected) {
+  auto b = EncodeMsg(Sample());
+  Frame f;
+  ASSERT_TRUE(DecodeDatagram(b.data(), b.size(), &f));
+  f.body[43] = 3;  // payload length 3 but 2 bytes present
+  MsgFrame mf;
+  EXPECT_FALSE(DecodeMsgBody(f.body, &mf));
+}
+
+TEST(Frame, LegacyTypeNumbers) {
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_VISION"), 18);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_VISION_OMNIDIR"), 19);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_VISION_FRONTAL"), 20);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_MOTION"), 21);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_MONITOR"), 22);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_MAP"), 23);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_SCARE"), 24);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_BRIAN"), 25);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_ANCHORER"), 27);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_REFBOX"), 28);
+  EXPECT_EQ(MsgTypeFromName("MSG_TO_BRIAN"), 31);
+  EXPECT_EQ(MsgTypeFromName("MSG_TO_MOTION"), 32);
+  EXPECT_EQ(MsgTypeFromName("MSG_TO_ANCHORER"), 34);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_JOYPAD_BRIEF"), 43);
+  EXPECT_EQ(MsgTypeFromName("MSG_FROM_SONAR_QUALITY"), 44);
+  EXPECT_EQ(MsgTypeFromName("77"), 77);
+  EXPECT_EQ(MsgTypeFromName("MSG_NOPE"), -1);
+  EXPECT_STREQ(MsgTypeName(25), "MSG_FROM_BRIAN");
+}
+
+}  // namespace

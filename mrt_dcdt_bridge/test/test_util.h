@@ -1,0 +1,62 @@
+// Helpers shared by the DCDT tests: bounded waits and unique names.
+#pragma once
+
+#include <unistd.h>
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <thread>
+
+#include "mrt_dcdt_bridge/agora.h"
+#include "mrt_dcdt_bridge/channel.h"
+
+namespace dcdt_test {
+
+/// Polls pred every 5 ms for at most timeout_ms; returns its last value.
+inline bool WaitFor(const std::function<bool()>& pred, int timeout_ms = 3000) {
+  auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (std::chrono::steady_clock::now() < end) {
+    if (pred()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return pred();
+}
+
+/// A fresh directory for inner links (one per test, so tests never cross-talk).
+inline std::string TempDir(const std::string& tag) {
+  std::string t = "/tmp/dcdt_test_" + tag + "_" + std::to_string(::getpid()) + "_XXXXXX";
+  char* p = ::mkdtemp(t.data());
+  return p ? std::string(p) : t;
+}
+
+/// A channel that records what it is asked to send (for routing tests).
+class FakeChannel : public mrt::dcdt::Channel {
+ public:
+  explicit FakeChannel(mrt::dcdt::ChannelMode m, int lvl = 0) {
+    mode = m;
+    level = lvl;
+  }
+  void Start() override {}
+  void Stop() override {}
+  void Send(const mrt::dcdt::MsgPtr& m) override {
+    std::lock_guard<std::mutex> l(mu);
+    sent.push_back(m);
+  }
+  mrt::dcdt::ChannelStats Stats() const override { return {}; }
+  size_t Count() {
+    std::lock_guard<std::mutex> l(mu);
+    return sent.size();
+  }
+  std::mutex mu;
+  std::vector<mrt::dcdt::MsgPtr> sent;
+};
+
+inline mrt::dcdt::AgoraOptions IsolatedOptions(mrt::dcdt::PostOfficePolicy p = mrt::dcdt::PostOfficePolicy::SLWB) {
+  mrt::dcdt::AgoraOptions o;
+  o.inner_links = false;
+  o.config.policy = p;
+  return o;
+}
+
+}  // namespace dcdt_test
