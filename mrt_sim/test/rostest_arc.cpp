@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
+#include <mrt_msgs/WheelCommand.h>
 #include <mrt_msgs/WheelState.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -187,6 +189,50 @@ TEST_F(ArcTest, WheelsStopAfterCommandTimeout) {
   ASSERT_FALSE(s.status.empty());
   EXPECT_TRUE(s.status[0] & mrt_msgs::WheelState::STATUS_WATCHDOG);
   for (double sp : s.speed) EXPECT_EQ(sp, 0.0);
+}
+
+TEST_F(ArcTest, WheelCommandOfWrongSizeIsDroppedAndCounted) {
+  const geometry_msgs::Twist none;
+  auto at_rest = [&] { return gt_.size() > 2 && gt_.back().twist.twist.linear.x == 0.0; };
+  ASSERT_TRUE(spin_until(at_rest, false, none, 30.0));
+  std::vector<diagnostic_msgs::DiagnosticStatus> diag;
+  ros::Subscriber diag_sub = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& st : m->status)
+          if (st.name.find("robot " + robot_) != std::string::npos) diag.push_back(st);
+      });
+  ros::Publisher wheel_pub = nh_.advertise<mrt_msgs::WheelCommand>("/" + robot_ + "/wheel_cmd", 10);
+  auto connected = [&] { return wheel_pub.getNumSubscribers() > 0; };
+  ASSERT_TRUE(spin_until(connected, false, none, 10.0));
+
+  // Three wheels for a two-wheel base: dropped, the robot stays put.
+  mrt_msgs::WheelCommand bad;
+  bad.mode = mrt_msgs::WheelCommand::MODE_SPEED;
+  bad.speed = {5.0, 5.0, 5.0};
+  wheel_pub.publish(bad);
+  const std::size_t start = gt_.size();
+  const double t_bad = gt_.back().header.stamp.toSec();
+  auto later = [&] { return gt_.back().header.stamp.toSec() > t_bad + 0.3; };
+  ASSERT_TRUE(spin_until(later, false, none, 10.0));
+  EXPECT_EQ(first_motion(gt_, start), gt_.size()) << "a malformed wheel_cmd moved the robot";
+
+  // Diagnostics count it.
+  auto counted = [&] {
+    for (const auto& st : diag)
+      for (const auto& kv : st.values)
+        if (kv.key == "commands dropped" && kv.value != "0") return true;
+    return false;
+  };
+  EXPECT_TRUE(spin_until(counted, false, none, 10.0)) << "no dropped command in /diagnostics";
+
+  // Two equal wheel speeds: straight at wheel speed x wheel radius (0.05 m).
+  mrt_msgs::WheelCommand good = bad;
+  good.speed = {4.0, 4.0};
+  wheel_pub.publish(good);
+  auto moving = [&] { return gt_.back().twist.twist.linear.x != 0.0; };
+  ASSERT_TRUE(spin_until(moving, false, none, 10.0));
+  EXPECT_NEAR(gt_.back().twist.twist.linear.x, 4.0 * 0.05, 1e-9);
+  EXPECT_NEAR(gt_.back().twist.twist.angular.z, 0.0, 1e-12);
 }
 
 }  // namespace

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/MiceReading.h>
@@ -49,7 +51,8 @@ class BagTest : public ::testing::Test {
   void SetUp() override {
     ros::NodeHandle pnh("~");
     pnh.param("robot", robot_, std::string("robot1"));
-    pnh.param("bag", bag_path_, std::string("/tmp/mrt_sim_bag_test.bag"));
+    // Unique per run so parallel test runs do not share a file.
+    pnh.param("bag", bag_path_, "/tmp/mrt_sim_bag_test_" + std::to_string(::getpid()) + ".bag");
     pnh.param("duration", duration_, 3.0);
     pnh.param("speed", speed_, 0.3);
     pnh.param("rate_mice", rate_mice_, 50.0);
@@ -255,6 +258,8 @@ TEST_F(BagTest, RecordReplayAndCheck) {
     }
   }
   for (const auto& c : expected_classes_) EXPECT_TRUE(classes.count(c)) << "no object of class " << c;
+  in.close();
+  if (!HasFailure()) std::remove(bag_path_.c_str());
   std::printf("bag: %zu mice and %zu percept messages in %.1f s\n", static_cast<std::size_t>(mice_window.size()),
               static_cast<std::size_t>(vision_window.size()), duration_);
 }
