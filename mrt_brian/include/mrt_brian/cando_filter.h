@@ -1,0 +1,33 @@
+// CANDO filters (manual §10.3.6): which behaviours the engine activates.
+#pragma once
+
+#include "mrt_brian/types.h"
+
+namespace mrt::brian {
+
+class CandoFilter {
+ public:
+  virtual ~CandoFilter() = default;
+  virtual bool active(const FuzzyValue& cando) const = 0;
+};
+
+/// threshold_filter: active when the value is higher than the threshold
+/// (default 0.49, §10.4.4); with `check_reliability` the reliability must be
+/// higher too (the 2009 engine's composite filter).
+class ThresholdFilter : public CandoFilter {
+ public:
+  explicit ThresholdFilter(double threshold = 0.49, bool check_reliability = false)
+      : threshold_(threshold), check_reliability_(check_reliability) {}
+  bool active(const FuzzyValue& c) const override {
+    return c.value > threshold_ && (!check_reliability_ || c.reliability > threshold_);
+  }
+  void set_threshold(double t) { threshold_ = t; }
+  double threshold() const { return threshold_; }
+  bool checks_reliability() const { return check_reliability_; }
+
+ private:
+  double threshold_;
+  bool check_reliability_;
+};
+
+}  // namespace mrt::brian

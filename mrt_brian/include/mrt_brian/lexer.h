@@ -1,0 +1,51 @@
+// Tokenizer shared by the Mr. BRIAN file parsers: parentheses, '=', '=>',
+// ';' and words; '#' comments to end of line and '#( ... ;' block comments.
+// Blanks are space, tab, CR, LF, FF, VT and the UTF-8 no-break space.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace mrt::brian {
+
+struct Token {
+  enum Kind { kOpen, kClose, kEquals, kArrow, kSemicolon, kWord, kEnd };
+  Kind kind = kEnd;
+  std::string text;
+  int line = 0;
+  int column = 0;
+};
+
+/// Human-readable form of a token for error messages.
+std::string describe(const Token& t);
+
+/// Splits `text` into tokens; the last one is kEnd. `block_comments` enables
+/// '#( ... ;' (predicate, CANDO, WANT and rule files); `comments` enables '#'.
+std::vector<Token> tokenize(const std::string& text, bool comments = true,
+                            bool block_comments = true);
+
+/// Cursor over a token vector that throws mrt::common::ParseError.
+class TokenStream {
+ public:
+  TokenStream(std::vector<Token> tokens, std::string file)
+      : tokens_(std::move(tokens)), file_(std::move(file)) {}
+  const Token& peek(std::size_t ahead = 0) const;
+  const Token& next();
+  bool at_end() const { return peek().kind == Token::kEnd; }
+  /// Consumes a token of kind `k` or throws "expected <what>".
+  const Token& expect(Token::Kind k, const std::string& what);
+  const Token& expect_word(const std::string& what) { return expect(Token::kWord, what); }
+  double expect_number(const std::string& what);
+  [[noreturn]] void fail(const Token& at, const std::string& message) const;
+  const std::string& file() const { return file_; }
+
+ private:
+  std::vector<Token> tokens_;
+  std::size_t pos_ = 0;
+  std::string file_;
+};
+
+/// Reads a whole file; throws ParseError(path, 0, 0, "cannot open file").
+std::string read_text_file(const std::string& path);
+
+}  // namespace mrt::brian

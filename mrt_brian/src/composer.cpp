@@ -1,0 +1,59 @@
+#include "mrt_brian/composer.h"
+
+namespace mrt::brian {
+
+std::unique_ptr<WeightComposer> WeightComposer::make(WeightComposerKind k) {
+  switch (k) {
+    case WeightComposerKind::kMax: return std::make_unique<MaxWeightComposer>();
+    case WeightComposerKind::kMin: return std::make_unique<MinWeightComposer>();
+    case WeightComposerKind::kMult: break;
+  }
+  return std::make_unique<MultWeightComposer>();
+}
+
+std::unique_ptr<FloatComposer> FloatComposer::make(FloatComposerKind k) {
+  switch (k) {
+    case FloatComposerKind::kMax: return std::make_unique<MaxFloatComposer>();
+    case FloatComposerKind::kMin: return std::make_unique<MinFloatComposer>();
+    case FloatComposerKind::kAverage: break;
+  }
+  return std::make_unique<AverageFloatComposer>();
+}
+
+Composer::Composer(WeightComposerKind w, FloatComposerKind f, const std::vector<int>& labels)
+    : weight_(WeightComposer::make(w)), float_(FloatComposer::make(f)) {
+  for (int n : labels) {
+    first_.push_back(slots_);
+    slots_ += n;
+  }
+}
+
+void Composer::weight_in_place(ProposalList& proposals, const std::vector<double>& weights) const {
+  for (Proposal& p : proposals)
+    p.value = weight_->compose(p.value, weights[static_cast<std::size_t>(p.owner)]);
+}
+
+ComposedActions Composer::make_output() const {
+  ComposedActions out;
+  out.first = first_;
+  out.value.assign(static_cast<std::size_t>(slots_), 0.0);
+  out.count.assign(static_cast<std::size_t>(slots_), 0);
+  return out;
+}
+
+void Composer::compose(const ProposalList& proposals, const std::vector<double>* weights,
+                       ComposedActions& out) const {
+  if (out.value.size() != static_cast<std::size_t>(slots_)) out = make_output();
+  std::fill(out.value.begin(), out.value.end(), 0.0);
+  std::fill(out.count.begin(), out.count.end(), 0);
+  for (const Proposal& p : proposals) {
+    const double v = weights ? weight_->compose(p.value, (*weights)[static_cast<std::size_t>(p.owner)]) : p.value;
+    const std::size_t s = static_cast<std::size_t>(first_[static_cast<std::size_t>(p.action)] + p.label);
+    out.value[s] = out.count[s] == 0 ? v : float_->combine(out.value[s], v);
+    ++out.count[s];
+  }
+  for (std::size_t s = 0; s < out.value.size(); ++s)
+    if (out.count[s] > 0) out.value[s] = float_->finish(out.value[s], out.count[s]);
+}
+
+}  // namespace mrt::brian

@@ -1,0 +1,151 @@
+#include "mrt_brian/defuzzyfier.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "mrt_common/angle.h"
+#include "mrt_common/parse_error.h"
+
+namespace mrt::brian {
+
+using mrt::common::ParseError;
+
+Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<AssociationDef>& assocs,
+                         DefuzzMethod method, Profile profile, const std::string& shapes_file,
+                         const std::string& assoc_file)
+    : method_(method), profile_(profile) {
+  SymbolTable shape_ids;
+  for (const auto& def : shapes) {
+    if (shape_ids.find(def.name) >= 0)
+      throw ParseError(shapes_file, def.line, def.column, "shape '" + def.name + "' defined twice");
+    shape_ids.intern(def.name);
+    try {
+      shapes_.push_back(Shape::from_def(def));
+    } catch (const std::invalid_argument& e) {
+      throw ParseError(shapes_file, def.line, def.column, e.what());
+    }
+    if (method == DefuzzMethod::kBarycenter)
+      for (const auto& set : def.sets)
+        if (set.type == "SNG" || set.type == "TOL" || set.type == "TOR")
+          throw ParseError(shapes_file, set.line, set.column,
+                           "barycenter defuzzification needs sets with an area (TRI DIV TRA REC), got " + set.type);
+  }
+  for (const auto& a : assocs) {
+    const int shape = shape_ids.find(a.shape);
+    if (shape < 0)
+      throw ParseError(assoc_file, a.line, a.column, "unknown shape '" + a.shape + "' for action '" + a.name + "'");
+    const int id = actions_.intern(a.name);
+    if (id < static_cast<int>(shape_of_.size())) {
+      shape_of_[static_cast<std::size_t>(id)] = shape;
+    } else {
+      shape_of_.push_back(shape);
+      is_angle_.push_back(a.name.find("Angle") != std::string::npos ? 1 : 0);
+    }
+  }
+}
+
+std::vector<int> Defuzzyfier::labels_per_action() const {
+  std::vector<int> out;
+  for (int a = 0; a < action_count(); ++a) out.push_back(label_count(a));
+  return out;
+}
+
+double Defuzzyfier::singleton_point(int action, int label) const { return shape(action).set(label).singleton(); }
+
+void Defuzzyfier::defuzzify(const ComposedActions& in, std::vector<double>& value,
+                            std::vector<std::uint8_t>& has) const {
+  const std::size_t n = static_cast<std::size_t>(action_count());
+  value.assign(n, 0.0);
+  has.assign(n, 0);
+  for (int a = 0; a < action_count(); ++a) {
+    const int labels = label_count(a);
+    double num = 0.0, den = 0.0;
+    if (method_ == DefuzzMethod::kBarycenter) {
+      for (int l = 0; l < labels; ++l) {
+        if (!in.present(a, l)) continue;
+        const double mu = in.get(a, l);
+        for (const Polygon& poly : shape(a).set(l).polygons()) {
+          const AreaMoment am = clipped_area(poly, mu);
+          num += am.moment;
+          den += am.area;
+        }
+      }
+      if (den > 0.0) {
+        value[static_cast<std::size_t>(a)] = num / den;
+        has[static_cast<std::size_t>(a)] = 1;
+      }
+      continue;
+    }
+    if (is_angle(a)) {
+      if (profile_ == Profile::kLegacy) {
+        // The 2009 engine: weighted sum of unit vectors with 0.01745 rad/deg.
+        constexpr double k = 0.01745;
+        double sx = 0.0, sy = 0.0, w = 0.0;
+        for (int l = 0; l < labels; ++l) {
+          if (!in.present(a, l)) continue;
+          const double mu = in.get(a, l);
+          sx += mu * std::cos(singleton_point(a, l) * k);
+          sy += mu * std::sin(singleton_point(a, l) * k);
+          w += mu;
+        }
+        if (w != 0.0) {
+          double deg = std::atan2(sy, sx) / k;
+          if (deg < 0.0) deg += 360.0;
+          value[static_cast<std::size_t>(a)] = deg;
+          has[static_cast<std::size_t>(a)] = 1;
+        }
+      } else {
+        scratch_angles_.clear();
+        scratch_weights_.clear();
+        for (int l = 0; l < labels; ++l) {
+          if (!in.present(a, l) || !(in.get(a, l) > 0.0)) continue;
+          scratch_angles_.push_back(mrt::common::deg_to_rad(singleton_point(a, l)));
+          scratch_weights_.push_back(in.get(a, l));
+        }
+        if (scratch_angles_.empty()) continue;
+        try {
+          double deg = mrt::common::rad_to_deg(mrt::common::circular_mean(scratch_angles_, scratch_weights_));
+          if (deg < 0.0) deg += 360.0;
+          value[static_cast<std::size_t>(a)] = deg;
+          has[static_cast<std::size_t>(a)] = 1;
+        } catch (const std::invalid_argument&) {
+          // opposite angles cancel out: no command
+        }
+      }
+      continue;
+    }
+    for (int l = 0; l < labels; ++l) {
+      if (!in.present(a, l)) continue;
+      const double mu = in.get(a, l);
+      num += mu * singleton_point(a, l);
+      den += mu;
+    }
+    if (den != 0.0) {
+      value[static_cast<std::size_t>(a)] = num / den;
+      has[static_cast<std::size_t>(a)] = 1;
+    }
+  }
+}
+
+CommandList Defuzzyfier::defuzzify(const std::vector<Action>& actions) const {
+  Composer composer(WeightComposerKind::kMult, FloatComposerKind::kMax, labels_per_action());
+  ComposedActions in = composer.make_output();
+  for (const auto& act : actions) {
+    const int a = action_id(act.name);
+    if (a < 0) throw std::invalid_argument("unknown action '" + act.name + "'");
+    const int l = label_id(a, act.label);
+    if (l < 0) throw std::invalid_argument("unknown label '" + act.label + "' of action '" + act.name + "'");
+    const std::size_t s = static_cast<std::size_t>(in.first[static_cast<std::size_t>(a)] + l);
+    in.value[s] = in.count[s] ? in.value[s] + act.value : act.value;
+    ++in.count[s];
+  }
+  std::vector<double> value;
+  std::vector<std::uint8_t> has;
+  defuzzify(in, value, has);
+  CommandList out;
+  for (int a = 0; a < action_count(); ++a)
+    if (has[static_cast<std::size_t>(a)]) out.push_back({action_name(a), value[static_cast<std::size_t>(a)]});
+  return out;
+}
+
+}  // namespace mrt::brian

@@ -1,0 +1,45 @@
+#include "mrt_brian/expression.h"
+
+#include <algorithm>
+
+namespace mrt::brian {
+
+FuzzyValue ExpressionPool::evaluate(int root, const EvalState& s) const {
+  const ExprNode& n = nodes_[static_cast<std::size_t>(root)];
+  switch (n.op) {
+    case ExprNode::kAnd: {
+      const FuzzyValue x = evaluate(n.a, s), y = evaluate(n.b, s);
+      return {std::min(x.value, y.value), std::min(x.reliability, y.reliability)};
+    }
+    case ExprNode::kOr: {
+      const FuzzyValue x = evaluate(n.a, s), y = evaluate(n.b, s);
+      return {std::max(x.value, y.value), std::max(x.reliability, y.reliability)};
+    }
+    case ExprNode::kNot: {
+      const FuzzyValue x = evaluate(n.a, s);
+      return {1.0 - x.value, x.reliability};
+    }
+    case ExprNode::kDatum:
+      return s.fuzzy[static_cast<std::size_t>(n.ref)];
+    case ExprNode::kPredicate:
+      return s.predicates[static_cast<std::size_t>(n.ref)];
+    case ExprNode::kProposal: {
+      FuzzyValue out;
+      if (!s.proposals) return out;
+      bool found = false;
+      for (const Proposal& p : *s.proposals) {
+        if (p.action != n.action || (n.ref >= 0 && p.owner != n.ref) ||
+            (n.label >= 0 && p.label != n.label))
+          continue;
+        out.value = found ? std::max(out.value, p.value) : p.value;
+        found = true;
+      }
+      return out;
+    }
+    case ExprNode::kZero:
+      break;
+  }
+  return {};
+}
+
+}  // namespace mrt::brian

@@ -1,0 +1,61 @@
+#include "mrt_brian/shape_parser.h"
+
+#include "mrt_brian/fuzzy_set.h"
+#include "mrt_brian/lexer.h"
+
+namespace mrt::brian {
+
+std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& file) {
+  TokenStream ts(tokenize(text), file);
+  std::vector<ShapeDef> out;
+  while (!ts.at_end()) {
+    if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
+    const Token& open = ts.expect(Token::kOpen, "'(' opening a shape");
+    ShapeDef shape;
+    shape.line = open.line;
+    shape.column = open.column;
+    shape.name = ts.expect_word("a shape name").text;
+    while (ts.peek().kind == Token::kOpen) {
+      ts.next();
+      SetDef set;
+      const Token& type = ts.expect_word("a fuzzy set type (TRI TOL TOR DIV TRA REC SNG)");
+      set.type = type.text;
+      set.line = type.line;
+      set.column = type.column;
+      const int arity = fuzzy_set_arity(set.type);
+      if (arity < 0)
+        ts.fail(type, "unknown fuzzy set type '" + set.type + "' (expected TRI TOL TOR DIV TRA REC SNG)");
+      ts.expect(Token::kOpen, "'(' before the label of the " + set.type + " set");
+      set.label = ts.expect_word("a fuzzy set label").text;
+      while (ts.peek().kind == Token::kWord) set.params.push_back(ts.expect_number("a number"));
+      if (static_cast<int>(set.params.size()) != arity)
+        ts.fail(ts.peek(), set.type + " takes " + std::to_string(arity) + " values, got " +
+                               std::to_string(set.params.size()));
+      ts.expect(Token::kClose, "')' after the values of " + set.label);
+      ts.expect(Token::kClose, "')' closing the " + set.type + " set");
+      shape.sets.push_back(std::move(set));
+    }
+    ts.expect(Token::kClose, "'(' of a fuzzy set or ')' closing shape " + shape.name);
+    out.push_back(std::move(shape));
+  }
+  return out;
+}
+
+std::vector<AssociationDef> parse_associations(const std::string& text, const std::string& file) {
+  TokenStream ts(tokenize(text), file);
+  std::vector<AssociationDef> out;
+  while (!ts.at_end()) {
+    if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
+    const Token& open = ts.expect(Token::kOpen, "'(' opening an association");
+    AssociationDef a;
+    a.line = open.line;
+    a.column = open.column;
+    a.name = ts.expect_word("a datum or action name").text;
+    a.shape = ts.expect_word("a shape name").text;
+    ts.expect(Token::kClose, "')' closing the association of " + a.name);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+}  // namespace mrt::brian

@@ -1,0 +1,129 @@
+// The whole engine in the manual profile on a small rule base whose
+// numbers are worked by hand in the comments, plus the hierarchy rules
+// (predicate actions, &DEL of lower levels, threshold, file order).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "mrt_brian/brian.h"
+#include "mrt_common/parse_error.h"
+
+using namespace mrt::brian;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+// Obstacle distance -> NEAR/FAR; Cruise (level 1) proposes FAST when far and
+// SLOW when near; Brake (level 2) sees the proposed speed through the
+// predicate action GoingFast and deletes FAST.
+fs::path make_base(const std::string& brake_rules) {
+  const fs::path d = fs::temp_directory_path() / ("brian_modules_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  write(d / "shape_ctof.txt", "(DIST (TOL (NEAR 0 100)) (TOR (FAR 0 100)))\n(SP (TOL (SLOW 10 30)) (TOR (FAST 10 30)))\n");
+  write(d / "ctof.txt", "(Obstacle DIST)\n(ProposedSpeed SP)\n");
+  write(d / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\nObstacleFar = (D Obstacle FAR);\n");
+  write(d / "PredicateActions.ini", "GoingFast = (D ProposedSpeed FAST);\n");
+  write(d / "Cando.ini", "Cruise = (OR (P ObstacleFar) (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
+  write(d / "want.txt", "Cruise = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
+  write(d / "behavior.txt", "(level 1 Cruise cruise.rul)\n(level 2 Brake brake.rul)\n");
+  write(d / "cruise.rul", "(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (Speed SLOW);\n");
+  write(d / "brake.rul", brake_rules);
+  write(d / "s_shape.txt", "(SPD (SNG (STOP 0)) (SNG (SLOW 10)) (SNG (FAST 30)))\n");
+  write(d / "s_ftoc.txt", "(Speed SPD)\n");
+  return d;
+}
+
+double command(const CommandList& c, const std::string& name) {
+  for (const auto& x : c)
+    if (x.name == name) return x.value;
+  ADD_FAILURE() << "no command " << name;
+  return -1;
+}
+
+}  // namespace
+
+TEST(Modules, ManualProfileHandWorked) {
+  const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (&DEL.Speed FAST) (Speed STOP);\n");
+  Brian b(ConfigFiles::from_directory(d.string()));
+  // Obstacle 40 (rel 0.5): NEAR <0.6, 0.5>, FAR <0.4, 0.5>. CANDO Cruise 0.6,
+  // Brake 0.6 (both > 0.49); WANT Cruise 0.4, Brake 0.6.
+  // Cruise: FAST 0.4*0.5 = 0.2, SLOW 0.6*0.5 = 0.3.
+  // Before level 2: FAST 0.2*0.4 = 0.08, SLOW 0.3*0.4 = 0.12 -> (30*0.08 + 10*0.12)/0.2 = 18
+  // -> ProposedSpeed 18: FAST 0.4 -> GoingFast <0.4, 1>.
+  // Brake: AND(<0.4,1>, <0.6,0.5>) = <0.4,0.5> -> 0.2: deletes FAST, STOP 0.2.
+  // Final: SLOW 0.12, STOP 0.2*0.6 = 0.12 -> (10*0.12 + 0*0.12)/0.24 = 5.
+  CycleTrace t;
+  const CommandList& out = b.run({{"Obstacle", 40, 0.5}}, &t);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(command(out, "Speed"), 5.0, 1e-9);
+  bool saw_going_fast = false;
+  for (const auto& p : t.predicates)
+    if (p.name == "GoingFast") {
+      saw_going_fast = true;
+      EXPECT_NEAR(p.v.value, 0.4, 1e-9);
+    }
+  EXPECT_TRUE(saw_going_fast);
+  ASSERT_EQ(t.actions.size(), 2u);
+  for (const auto& a : t.actions) EXPECT_NEAR(a.mu, 0.12, 1e-9) << a.label;
+  // Obstacle 150: FAR <1,1>; only Cruise is active, FAST 1 -> 30.
+  EXPECT_NEAR(command(b.run({{"Obstacle", 150, 1}}), "Speed"), 30.0, 1e-9);
+  // No datum at all: Obstacle reads <0,1> everywhere -> NEAR = 1 (TOL at 0)?
+  // No: a missing datum is not fuzzified, every fuzzy datum reads <0, 1>, so
+  // nothing is active and there is no command.
+  EXPECT_TRUE(b.run({}).empty());
+}
+
+TEST(Modules, ManualProfileWithoutDeletionAveragesAllProposals) {
+  const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (Speed STOP);\n");
+  Brian b(ConfigFiles::from_directory(d.string()));
+  // As above without &DEL: FAST 0.08, SLOW 0.12, STOP 0.12 -> (2.4 + 1.2)/0.32 = 11.25.
+  EXPECT_NEAR(command(b.run({{"Obstacle", 40, 0.5}}), "Speed"), 11.25, 1e-9);
+}
+
+TEST(Modules, ThresholdIsSettable) {
+  const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (Speed STOP);\n");
+  BrianOptions opt;
+  opt.threshold = 0.65;  // CANDO 0.6 no longer activates anything
+  Brian b(ConfigFiles::from_directory(d.string()), opt);
+  EXPECT_TRUE(b.run({{"Obstacle", 40, 0.5}}).empty());
+  b.engine().set_threshold(0.5);
+  EXPECT_FALSE(b.run({{"Obstacle", 40, 0.5}}).empty());
+}
+
+TEST(Modules, LegacyProfileUsesValueNotValueTimesReliability) {
+  const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (Speed STOP);\n");
+  BrianOptions opt;
+  opt.profile = Profile::kLegacy;
+  Brian b(ConfigFiles::from_directory(d.string()), opt);
+  // Reliability 0.5 > 0.49, CANDO/WANT pass the composite filter only where
+  // value > 0.49: Cruise CANDO <0.6,0.5> active; WANT Cruise 0.4 -> weight 0,
+  // Brake CANDO <0.6,0.5> active, WANT 0.6. Cruise: FAST 0.4, SLOW 0.6
+  // (values, not value*rel). Brake start: weights in place -> 0, 0: no
+  // ProposedSpeed command, GoingFast 0, Brake does not fire. End: 0 again.
+  CycleTrace t;
+  b.run({{"Obstacle", 40, 0.5}}, &t);
+  EXPECT_TRUE(t.commands.empty());
+  ASSERT_EQ(t.rules.size(), 2u);
+  for (const auto& r : t.rules) EXPECT_EQ(r.behavior, "Cruise");
+}
+
+TEST(Modules, ManualListFileWithEightFilesAndErrors) {
+  const fs::path d = make_base("(ObstacleNear) => (Speed STOP);\n");
+  write(d / "list8.ini", "ctof.txt\nshape_ctof.txt\nPredicate.ini\nCando.ini\nbehavior.txt\nwant.txt\ns_ftoc.txt\ns_shape.txt\n");
+  EXPECT_NO_THROW(Brian::from_path((d / "list8.ini").string()));
+  write(d / "list3.ini", "ctof.txt\nshape_ctof.txt\nPredicate.ini\n");
+  EXPECT_THROW(Brian::from_path((d / "list3.ini").string()), mrt::common::ParseError);
+  write(d / "brake.rul", "(ObstacleNear) => (Speed NOPE);\n");
+  try {
+    Brian::from_path(d.string());
+    FAIL() << "no error for an unknown label";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_NE(e.file().find("brake.rul"), std::string::npos);
+  }
+}
