@@ -1,0 +1,211 @@
+// mice_odometry_node: raw readings of the two mice -> nav_msgs/Odometry,
+// tf odom -> base_link (optional), error statistics and diagnostics.
+// The node is wiring: parameters are read once into the core's structs,
+// messages are converted at the boundary, all the work is MiceOdometry's.
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <mrt_msgs/MiceErrorStats.h>
+#include <mrt_msgs/MiceReading.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "mrt_mice/mice_io.h"
+#include "mrt_mice/mice_odometry.h"
+
+namespace mrt::mice {
+namespace {
+
+struct NodeOptions {
+  std::string params_file;  // ~params_file (required)
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
+  std::string frame_prefix;  // ~frame_prefix, e.g. "robot1/"
+  bool publish_tf = false;
+  int max_count = 100000;    // ~max_count: larger |counts| in one sample are malformed
+  double stale_timeout = 1.0;  // ~stale_timeout: s without readings before diagnostics warn
+  OdometryOptions odometry;
+};
+
+NodeOptions load_options(const ros::NodeHandle& pnh) {
+  NodeOptions o;
+  if (!pnh.getParam("params_file", o.params_file) || o.params_file.empty())
+    throw std::invalid_argument("~params_file: required (path of the mice YAML parameter file)");
+  pnh.param("odom_frame", o.odom_frame, o.odom_frame);
+  pnh.param("base_frame", o.base_frame, o.base_frame);
+  pnh.param("frame_prefix", o.frame_prefix, o.frame_prefix);
+  pnh.param("publish_tf", o.publish_tf, o.publish_tf);
+  pnh.param("max_count", o.max_count, o.max_count);
+  pnh.param("stale_timeout", o.stale_timeout, o.stale_timeout);
+  pnh.param("reduce_errors", o.odometry.reduce_errors, o.odometry.reduce_errors);
+  pnh.param("var_xy_per_m", o.odometry.var_xy_per_m, o.odometry.var_xy_per_m);
+  pnh.param("var_theta_per_rad", o.odometry.var_theta_per_rad, o.odometry.var_theta_per_rad);
+  pnh.param("var_theta_per_m", o.odometry.var_theta_per_m, o.odometry.var_theta_per_m);
+  pnh.param("flagged_gain", o.odometry.flagged_gain, o.odometry.flagged_gain);
+  if (o.max_count <= 0) throw std::invalid_argument("~max_count: must be > 0");
+  if (!(o.stale_timeout > 0.0)) throw std::invalid_argument("~stale_timeout: must be > 0");
+  if (o.odom_frame.empty()) throw std::invalid_argument("~odom_frame: must not be empty");
+  if (o.base_frame.empty()) throw std::invalid_argument("~base_frame: must not be empty");
+  try {
+    o.odometry.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("~") + e.what());
+  }
+  return o;
+}
+
+class MiceOdometryNode {
+ public:
+  MiceOdometryNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
+      : opt_(load_options(pnh)),
+        odo_(load_params(opt_.params_file), opt_.odometry),
+        odom_frame_(opt_.frame_prefix + opt_.odom_frame),
+        base_frame_(opt_.frame_prefix + opt_.base_frame) {
+    odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 50);
+    stats_pub_ = nh.advertise<mrt_msgs::MiceErrorStats>("mice_errors", 50);
+    if (opt_.publish_tf) tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
+    sub_ = nh.subscribe("mice", 100, &MiceOdometryNode::on_mice, this);
+    diag_.setHardwareID("mice_odometry");
+    diag_.add("mice odometry", this, &MiceOdometryNode::diagnose);
+    diag_timer_ = nh.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diag_.update(); });
+    const ManualGeometry g = manual_geometry(odo_.model().params());
+    ROS_INFO("mice_odometry: %s, D = %.1f mm, delta = %.2f deg, publishing %s -> %s%s",
+             opt_.params_file.c_str(), g.D * 1000.0, g.delta * 180.0 / M_PI, odom_frame_.c_str(),
+             base_frame_.c_str(), opt_.publish_tf ? " with tf" : "");
+  }
+
+ private:
+  void on_mice(const mrt_msgs::MiceReading::ConstPtr& m) {
+    const long long lim = opt_.max_count;
+    auto bad = [lim](long long v) { return v > lim || v < -lim; };
+    if (bad(m->left.dx) || bad(m->left.dy) || bad(m->right.dx) || bad(m->right.dy)) {
+      ++dropped_;
+      ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading with |counts| > %d (%llu dropped)",
+                        opt_.max_count, static_cast<unsigned long long>(dropped_));
+      return;
+    }
+    ros::Time stamp = m->header.stamp.isZero() ? ros::Time::now() : m->header.stamp;
+    if (have_last_ && stamp < last_stamp_) {
+      ++dropped_;
+      ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading older than the previous one");
+      return;
+    }
+    MiceCounts c;
+    c.left_dx = m->left.dx;
+    c.left_dy = m->left.dy;
+    c.right_dx = m->right.dx;
+    c.right_dy = m->right.dy;
+    const StepResult r = odo_.update(c);
+    const double dt = have_last_ ? (stamp - last_stamp_).toSec() : 0.0;
+    have_last_ = true;
+    last_stamp_ = stamp;
+    last_wall_ = ros::WallTime::now();
+    publish(stamp, r, dt);
+  }
+
+  void publish(const ros::Time& stamp, const StepResult& r, double dt) {
+    const Pose2D& p = odo_.pose();
+    nav_msgs::Odometry o;
+    o.header.stamp = stamp;
+    o.header.frame_id = odom_frame_;
+    o.child_frame_id = base_frame_;
+    o.pose.pose.position.x = p.x;
+    o.pose.pose.position.y = p.y;
+    o.pose.pose.orientation.z = std::sin(p.theta / 2.0);
+    o.pose.pose.orientation.w = std::cos(p.theta / 2.0);
+    const auto& c = odo_.covariance();
+    // 6x6 (x, y, z, roll, pitch, yaw); z, roll and pitch are not measured.
+    const int idx[3] = {0, 1, 5};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) o.pose.covariance[idx[i] * 6 + idx[j]] = c[i * 3 + j];
+    o.pose.covariance[2 * 6 + 2] = o.pose.covariance[3 * 6 + 3] = o.pose.covariance[4 * 6 + 4] = 1e6;
+    if (dt > 0.0) {
+      o.twist.twist.linear.x = r.delta.x / dt;
+      o.twist.twist.linear.y = r.delta.y / dt;
+      o.twist.twist.angular.z = r.delta.theta / dt;
+    }
+    odom_pub_.publish(o);
+    if (tf_) {
+      geometry_msgs::TransformStamped t;
+      t.header = o.header;
+      t.child_frame_id = base_frame_;
+      t.transform.translation.x = p.x;
+      t.transform.translation.y = p.y;
+      t.transform.rotation = o.pose.pose.orientation;
+      tf_->sendTransform(t);
+    }
+    const ErrorStats& s = odo_.stats();
+    mrt_msgs::MiceErrorStats e;
+    e.header = o.header;
+    e.residual = r.detection.residual;
+    e.threshold = r.detection.threshold;
+    e.flagged = r.detection.flagged;
+    e.correction = to_string(r.reduction.correction);
+    e.samples = s.samples;
+    e.flagged_samples = s.flagged;
+    e.corrected_samples = s.corrected;
+    e.uncorrectable_samples = s.uncorrectable;
+    e.rms_residual = s.rms_residual();
+    e.max_abs_residual = s.max_abs_residual;
+    e.distance = odo_.distance();
+    stats_pub_.publish(e);
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
+    const ErrorStats& s = odo_.stats();
+    const double age = have_last_ ? (ros::WallTime::now() - last_wall_).toSec() : -1.0;
+    const double rate = s.samples ? static_cast<double>(s.flagged) / s.samples : 0.0;
+    if (!have_last_)
+      st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no readings yet");
+    else if (age > opt_.stale_timeout)
+      st.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "readings stopped");
+    else if (rate > 0.2)
+      st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "many samples flagged as erroneous");
+    else
+      st.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
+    st.add("samples", s.samples);
+    st.add("flagged", s.flagged);
+    st.add("corrected", s.corrected);
+    st.add("uncorrectable", s.uncorrectable);
+    st.add("dropped (malformed)", dropped_);
+    st.add("rms residual (m)", s.rms_residual());
+    st.add("distance (m)", odo_.distance());
+    st.add("seconds since last reading", age);
+  }
+
+  NodeOptions opt_;
+  MiceOdometry odo_;
+  std::string odom_frame_, base_frame_;
+  ros::Publisher odom_pub_, stats_pub_;
+  ros::Subscriber sub_;
+  std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
+  diagnostic_updater::Updater diag_;
+  ros::Timer diag_timer_;
+  bool have_last_ = false;
+  ros::Time last_stamp_;
+  ros::WallTime last_wall_;
+  std::uint64_t dropped_ = 0;
+};
+
+}  // namespace
+}  // namespace mrt::mice
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "mice_odometry");
+  ros::NodeHandle nh, pnh("~");
+  std::unique_ptr<mrt::mice::MiceOdometryNode> node;
+  try {
+    node = std::make_unique<mrt::mice::MiceOdometryNode>(nh, pnh);
+  } catch (const std::exception& e) {
+    ROS_FATAL("mice_odometry: %s", e.what());
+    return 1;
+  }
+  ros::spin();
+  return 0;
+}
