@@ -207,14 +207,24 @@ std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherR
         w.movers[i].color);
   for (std::size_t i = 0; i < others.size(); ++i)
     see(others[i].center, others_index + i, others[i].name, "Robot", others[i].color);
-  // Field lines: points at the middles of equal pieces about
-  // line_point_spacing long, fixed in the world so they can be matched.
+  // Field lines: points at the middles of n equal pieces about
+  // line_point_spacing long, fixed in the world so they can be matched;
+  // only the pieces whose middles fall inside the vision circle are visited.
   for (const Segment& l : w.field_lines) {
-    const double len = std::hypot(l.b.x - l.a.x, l.b.y - l.a.y);
-    const long n = std::max(1L, std::lround(len / cfg.line_point_spacing));
-    for (long j = 0; j < n; ++j) {
+    const double ex = l.b.x - l.a.x, ey = l.b.y - l.a.y, len2 = ex * ex + ey * ey;
+    const double n = std::min(1e6, std::max(1.0, std::round(std::sqrt(len2) / cfg.line_point_spacing)));
+    // |a + t e - eye| <= range  <=>  t in [t0, t1]
+    const double ax = l.a.x - eye.x, ay = l.a.y - eye.y;
+    const double b = len2 > 0.0 ? (ax * ex + ay * ey) / len2 : 0.0;
+    const double c = len2 > 0.0 ? (ax * ax + ay * ay - cfg.vision_range * cfg.vision_range) / len2 : 0.0;
+    const double disc = b * b - c;
+    if (len2 > 0.0 && disc < 0.0) continue;
+    const double root = std::sqrt(std::max(0.0, disc));
+    const double t0 = len2 > 0.0 ? -b - root : 0.0, t1 = len2 > 0.0 ? -b + root : 1.0;
+    const double j0 = std::max(0.0, std::ceil(t0 * n - 0.5)), j1 = std::min(n - 1.0, std::floor(t1 * n - 0.5));
+    for (double j = j0; j <= j1; ++j) {
       const double t = (j + 0.5) / n;
-      see({l.a.x + t * (l.b.x - l.a.x), l.a.y + t * (l.b.y - l.a.y)}, none, "line", "Line", "white");
+      see({l.a.x + t * ex, l.a.y + t * ey}, none, "line", "Line", "white");
     }
   }
   return out;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -79,7 +80,7 @@ class Loader {
     if (!n.IsMap()) fail(n, "expected a map for '" + what + "'");
     std::set<std::string> seen;
     for (auto it = n.begin(); it != n.end(); ++it) {
-      const Node& k = it->first;
+      const Node k = it->first;  // a copy: the iterator yields a temporary
       if (!k.IsScalar()) fail(k, "expected a key name in '" + what + "'");
       const std::string key = k.Scalar();
       bool ok = false;
@@ -152,10 +153,11 @@ class Loader {
     return v;
   }
 
-  long long integer(const Node& n, const std::string& key, long long lo) const {
+  // Upper bounds keep a hostile file from asking for unbounded memory.
+  long long integer(const Node& n, const std::string& key, long long lo, long long hi) const {
     long long v = 0;
-    if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v) || v < lo)
-      fail(n, "expected an integer >= " + std::to_string(lo) + " for '" + key + "'");
+    if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v) || v < lo || v > hi)
+      fail(n, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] for '" + key + "'");
     return v;
   }
 
@@ -182,7 +184,7 @@ class Loader {
     World w;
     w.file = file_;
     w.name = text(root, "name", "", true, "world");
-    if (const Node n = root["seed"]) w.seed = static_cast<std::uint64_t>(integer(n, "seed", 0));
+    if (const Node n = root["seed"]) w.seed = static_cast<std::uint64_t>(integer(n, "seed", 0, std::numeric_limits<long long>::max()));
     const Node bn = required(root, "bounds", "world");
     const auto b = numbers(bn, "bounds", 4);
     if (!(b[0] < b[2] && b[1] < b[3])) fail(bn, "expected 'bounds' [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax");
@@ -227,7 +229,7 @@ class Loader {
     const auto c = numbers(required(n, "center", "field_lines arc"), "center", 2);
     required(n, "radius", "field_lines arc");
     const double r = positive(n, "radius", 1.0);
-    const long long k = n["segments"] ? integer(n["segments"], "segments", 1) : 24;
+    const long long k = n["segments"] ? integer(n["segments"], "segments", 1, 3600) : 24;
     const double from = deg_to_rad(number(n, "from", 0.0)), to = deg_to_rad(number(n, "to", 360.0));
     for (long long i = 0; i < k; ++i) {
       const double a0 = from + (to - from) * i / k, a1 = from + (to - from) * (i + 1) / k;
@@ -373,7 +375,7 @@ class Loader {
     if (const Node e = n["encoders"]) {
       map(e, "encoders", {"rate", "ticks_per_rev"});
       s.rate_encoders = non_negative(e, "rate", 50.0);
-      if (e["ticks_per_rev"]) s.ticks_per_rev = static_cast<int>(integer(e["ticks_per_rev"], "ticks_per_rev", 1));
+      if (e["ticks_per_rev"]) s.ticks_per_rev = static_cast<int>(integer(e["ticks_per_rev"], "ticks_per_rev", 1, 1000000000));
     }
     if (const Node so = n["sonar"]) sonar(so, base, s);
     if (const Node v = n["vision"]) {
@@ -382,7 +384,7 @@ class Loader {
       s.vision_range = positive(v, "range", s.vision_range);
       s.vision_distance_noise = non_negative(v, "distance_noise", s.vision_distance_noise);
       s.vision_bearing_noise = deg_to_rad(non_negative(v, "bearing_noise", mrt::common::rad_to_deg(s.vision_bearing_noise)));
-      s.line_point_spacing = positive(v, "line_point_spacing", s.line_point_spacing);
+      s.line_point_spacing = bounded(v, "line_point_spacing", s.line_point_spacing, 0.01, false);
     }
     if (const Node d = n["dgps"]) {
       map(d, "dgps", {"rate", "noise", "datum"});
@@ -411,7 +413,7 @@ class Loader {
     const Node cn = n["count"], mn = n["mounts"];
     if (cn && mn) fail(mn, "expected either 'count' or 'mounts' in 'sonar', not both");
     if (cn) {
-      const long long k = integer(cn, "count", 1);
+      const long long k = integer(cn, "count", 1, 360);
       for (long long i = 0; i < k; ++i) {
         const double a = 2.0 * kPi * i / k;
         c.mount = Pose2D(base.body_radius * std::cos(a), base.body_radius * std::sin(a), a);

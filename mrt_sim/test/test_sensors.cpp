@@ -301,3 +301,22 @@ TEST(Vision, GoalsBallRobotsAndLinePoints) {
   }
   EXPECT_EQ(lines, 8);
 }
+
+TEST(Vision, OnlyLinePointsInRange) {
+  // A 40 m line along y = 1 cut into 160 pieces of 0.25 m: middles at
+  // x = -19.875, -19.625, ..., 19.875. In range (6 m) where |x| <= sqrt(35)
+  // = 5.916: x = -5.875 ... 5.875, that is 48 points.
+  World w;
+  w.field_lines.push_back({{-20.0, 1.0}, {20.0, 1.0}});
+  SensorsConfig cfg;
+  const auto seen = vision_percepts(w, {}, Pose2D(), cfg);
+  ASSERT_EQ(seen.size(), 48u);
+  double min_x = 1e9, max_x = -1e9;
+  for (const SeenObject& o : seen) {
+    const double x = o.distance * std::cos(o.bearing);
+    min_x = std::min(min_x, x);
+    max_x = std::max(max_x, x);
+  }
+  EXPECT_NEAR(min_x, -5.875, 1e-9);
+  EXPECT_NEAR(max_x, 5.875, 1e-9);
+}
