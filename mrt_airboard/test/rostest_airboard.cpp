@@ -1,0 +1,233 @@
+// rostests of airboard_node against airboard_emulator on a pseudo-terminal.
+// Each .test file starts both and selects one test with --gtest_filter.
+#include <geometry_msgs/Twist.h>
+#include <gtest/gtest.h>
+#include <mrt_msgs/AirboardStatus.h>
+#include <mrt_msgs/WheelState.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+
+#include <cmath>
+#include <mutex>
+#include <vector>
+
+#include "mrt_common/pose2d.h"
+
+using mrt::common::Pose2D;
+
+namespace {
+
+struct Sample {
+  double t;
+  Pose2D pose;
+  double vx, vy, omega;
+};
+
+class Airboard : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 10);
+    odom_sub_ = nh_.subscribe("odom", 1000, &Airboard::on_odom, this);
+    status_sub_ = nh_.subscribe("airboard_status", 1000, &Airboard::on_status, this);
+    wheel_sub_ = nh_.subscribe("wheel_state", 1000, &Airboard::on_wheels, this);
+    pnh_.param("vx", vx_, 0.3);
+    pnh_.param("vy", vy_, 0.0);
+    pnh_.param("omega", omega_, 0.5);
+    // Wait for the node to be connected to the emulator.
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(20.0);
+    while (ros::ok() && ros::WallTime::now() < end && !connected_) {
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+    ASSERT_TRUE(connected_) << "airboard_node never connected to the emulator";
+  }
+
+  // Publishes the twist at 50 Hz for `seconds` of wall time.
+  void drive(double seconds, double vx, double vy, double omega) {
+    geometry_msgs::Twist t;
+    t.linear.x = vx;
+    t.linear.y = vy;
+    t.angular.z = omega;
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::ok() && ros::WallTime::now() < end) {
+      cmd_pub_.publish(t);
+      ros::spinOnce();
+      ros::WallDuration(0.02).sleep();
+    }
+  }
+
+  void on_odom(const nav_msgs::Odometry& m) {
+    const auto& q = m.pose.pose.orientation;
+    odom_.push_back({m.header.stamp.toSec(),
+                     Pose2D(m.pose.pose.position.x, m.pose.pose.position.y, 2.0 * std::atan2(q.z, q.w)),
+                     m.twist.twist.linear.x, m.twist.twist.linear.y, m.twist.twist.angular.z});
+  }
+  void on_status(const mrt_msgs::AirboardStatus& s) {
+    if (s.connected && s.board_time > 0.0) connected_ = true;
+    status_.push_back(s);
+  }
+  void on_wheels(const mrt_msgs::WheelState& w) { wheels_.push_back(w); }
+
+  ros::NodeHandle nh_, pnh_{"~"};
+  ros::Publisher cmd_pub_;
+  ros::Subscriber odom_sub_, status_sub_, wheel_sub_;
+  double vx_ = 0, vy_ = 0, omega_ = 0;
+  bool connected_ = false;
+  std::vector<Sample> odom_;
+  std::vector<mrt_msgs::AirboardStatus> status_;
+  std::vector<mrt_msgs::WheelState> wheels_;
+};
+
+// A constant cmd_vel produces the commanded arc in the odometry within 1 %.
+TEST_F(Airboard, ConstantTwistDrawsTheCommandedArc) {
+  odom_.clear();
+  drive(4.0, vx_, vy_, omega_);
+  ASSERT_GT(odom_.size(), 100u);
+  // Steady state: from 1.5 s after the first sample to the end of the drive.
+  const double t0 = odom_.front().t + 1.5;
+  std::size_t a = 0;
+  while (a < odom_.size() && odom_[a].t < t0) ++a;
+  ASSERT_LT(a + 50, odom_.size());
+  const Sample& s0 = odom_[a];
+  const Sample& s1 = odom_.back();
+  const double dt = s1.t - s0.t;
+  ASSERT_GT(dt, 1.5);
+  const Pose2D rel = s0.pose.inverse() * s1.pose;
+  const Pose2D want = mrt::common::exp_twist(vx_, vy_, omega_, dt);
+  const double arc = std::hypot(vx_, vy_) * dt;
+  const double pos_err = std::hypot(rel.x - want.x, rel.y - want.y);
+  const double yaw_err = std::fabs(mrt::common::angle_diff(rel.theta, want.theta));
+  std::printf("arc: %.3f m over %.3f s, position error %.3g m (%.3f %%), heading error %.3g rad (%.3f %%)\n", arc,
+              dt, pos_err, 100 * pos_err / arc, yaw_err, 100 * yaw_err / std::fabs(omega_ * dt));
+  EXPECT_LT(pos_err, 0.01 * arc);
+  EXPECT_LT(yaw_err, 0.01 * std::fabs(omega_ * dt));
+  // The odometry twist averaged over the window (weighted by each sample's
+  // interval: the board's replies and its stream interleave) is the commanded one.
+  double mvx = 0, mvy = 0, mw = 0, tw = 0;
+  for (std::size_t i = a + 1; i < odom_.size(); ++i) {
+    const double w = odom_[i].t - odom_[i - 1].t;
+    mvx += w * odom_[i].vx;
+    mvy += w * odom_[i].vy;
+    mw += w * odom_[i].omega;
+    tw += w;
+  }
+  ASSERT_GT(tw, 0.0);
+  const double k = 1.0 / tw;
+  EXPECT_NEAR(mvx * k, vx_, 0.01 * std::hypot(vx_, vy_));
+  EXPECT_NEAR(mvy * k, vy_, 0.01 * std::hypot(vx_, vy_));
+  EXPECT_NEAR(mw * k, omega_, 0.01 * std::fabs(omega_));
+}
+
+// The emulator loses every PC -> board byte after 2 s (--cut-rx-after): the
+// firmware watchdog must stop the motors 100 ms of board time after the last
+// valid command, while the node keeps commanding.
+TEST_F(Airboard, WatchdogStopsTheWheels) {
+  status_.clear();
+  wheels_.clear();
+  drive(3.5, vx_, vy_, omega_);
+  ASSERT_EQ(status_.size(), wheels_.size());
+  // Find the first tripped state; the board time of the last valid command is
+  // board_time - since_command.
+  std::size_t trip = 0;
+  while (trip < status_.size() && !(status_[trip].status & mrt_msgs::WheelState::STATUS_WATCHDOG)) ++trip;
+  ASSERT_LT(trip, status_.size()) << "the watchdog never tripped";
+  const double t_cmd = status_[trip].board_time - status_[trip].since_command;
+  EXPECT_GE(status_[trip].since_command, 0.100 - 1e-9);
+  EXPECT_GE(status_[trip].watchdog_trips, 1u);
+  // Cruise speed before the cut.
+  double cruise = 0;
+  for (std::size_t i = 0; i < trip; ++i)
+    if (status_[i].board_time < t_cmd && status_[i].board_time > t_cmd - 0.5)
+      for (double w : wheels_[i].speed) cruise = std::max(cruise, std::fabs(w));
+  EXPECT_GT(cruise, 1.0);
+  std::size_t checked = 0, stopped = 0;
+  double first_still = -1;
+  for (std::size_t i = 0; i < status_.size(); ++i) {
+    const double since = status_[i].board_time - t_cmd;
+    if (status_[i].board_time < t_cmd) continue;
+    if (since < 0.100 - 1e-9) {
+      EXPECT_FALSE(status_[i].status & mrt_msgs::WheelState::STATUS_WATCHDOG) << "tripped early at " << since;
+      continue;
+    }
+    // From 100 ms on: set-points and drive are zero on every wheel.
+    ++checked;
+    EXPECT_TRUE(status_[i].status & mrt_msgs::WheelState::STATUS_WATCHDOG) << since;
+    for (std::size_t w = 0; w < wheels_[i].setpoint.size(); ++w) {
+      EXPECT_EQ(wheels_[i].setpoint[w], 0.0) << "at " << since << " s";
+      EXPECT_EQ(wheels_[i].duty[w], 0.0) << "at " << since << " s";
+    }
+    double peak = 0;
+    for (double w : wheels_[i].speed) peak = std::max(peak, std::fabs(w));
+    if (peak < 0.02 * cruise) {
+      if (first_still < 0) first_still = since;
+    }
+    // Short-circuit braking (tau 20 ms): below 2 % of cruise 100 ms after the trip.
+    if (since >= 0.200) {
+      ++stopped;
+      EXPECT_LT(peak, 0.02 * cruise) << "at " << since << " s";
+    }
+  }
+  std::printf("watchdog: tripped %.3f s after the last command, wheels below 2 %% of %.2f rad/s after %.3f s\n",
+              status_[trip].since_command, cruise, first_still);
+  EXPECT_GT(checked, 10u);
+  EXPECT_GT(stopped, 5u);
+}
+
+// 10 % of the PC -> board bytes (and 1 % of the replies) get a bit flipped:
+// the link survives and only the commanded set-points (or 0 after a watchdog
+// trip) ever reach a motor.
+TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
+  status_.clear();
+  wheels_.clear();
+  odom_.clear();
+  drive(5.0, vx_, vy_, omega_);
+  std::vector<double> want;
+  pnh_.getParam("expected_setpoints", want);
+  ASSERT_FALSE(want.empty());
+  ASSERT_FALSE(wheels_.empty());
+  // Skip the acceleration ramp: start at the first state showing the target.
+  auto is_target = [&](const mrt_msgs::WheelState& w) {
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (std::fabs(w.setpoint[i] - want[i]) > 1.5e-3) return false;
+    return true;
+  };
+  std::size_t start = 0;
+  while (start < wheels_.size() && !is_target(wheels_[start])) ++start;
+  ASSERT_LT(start, wheels_.size()) << "the commanded set-points never reached the board";
+  std::size_t on_target = 0, zero = 0;
+  for (std::size_t k = start; k < wheels_.size(); ++k) {
+    const auto& w = wheels_[k];
+    ASSERT_EQ(w.setpoint.size(), want.size());
+    bool all_zero = true;
+    for (double s : w.setpoint) all_zero = all_zero && s == 0.0;
+    if (is_target(w)) ++on_target;
+    else if (all_zero) ++zero;
+    else ADD_FAILURE() << "bogus set-point reached the board: " << w.setpoint[0] << ", " << w.setpoint[1];
+  }
+  // The link survived: connected all along, no reconnection, frames flowing.
+  bool all_connected = true;
+  for (const auto& s : status_) all_connected = all_connected && s.connected;
+  EXPECT_TRUE(all_connected);
+  ASSERT_FALSE(status_.empty());
+  const auto& last = status_.back();
+  EXPECT_EQ(last.reconnects, 0u);
+  EXPECT_GT(last.board_frames_bad, 50u) << "the line was not corrupted";
+  EXPECT_GT(last.frames_good, 200u);
+  ASSERT_FALSE(odom_.empty());
+  const double dist = std::hypot(odom_.back().pose.x - odom_.front().pose.x, odom_.back().pose.y - odom_.front().pose.y);
+  std::printf("corruption: %zu states on target, %zu stopped by the watchdog, board discarded %u frames, node "
+              "discarded %lu, %u watchdog trips, travelled %.2f m\n",
+              on_target, zero, last.board_frames_bad, static_cast<unsigned long>(last.frames_bad),
+              last.watchdog_trips, dist);
+  EXPECT_GT(on_target, zero);
+  EXPECT_GT(dist, 0.3);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "airboard_rostest");
+  ros::NodeHandle nh;  // keep the node alive for the whole run
+  return RUN_ALL_TESTS();
+}
