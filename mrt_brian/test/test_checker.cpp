@@ -1,0 +1,185 @@
+// brian_check: one malformed configuration per error kind, asserting the
+// exact file:line reported, and the tool's exit codes.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "mrt_brian/checker.h"
+
+using namespace mrt::brian;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+class CheckerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("brian_check_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "behaviors");
+    write(dir_ / "shape_ctof.txt", "(DIST (TOL (NEAR 0 100)) (TOR (FAR 0 100)))\n(SP (TOL (SLOW 10 30)) (TOR (FAST 10 30)))\n");
+    write(dir_ / "ctof.txt", "(Obstacle DIST)\n(ProposedSpeed SP)\n");
+    write(dir_ / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\nObstacleFar = (D Obstacle FAR);\n");
+    write(dir_ / "PredicateActions.ini", "GoingFast = (D ProposedSpeed FAST);\n");
+    write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNear);\n");
+    write(dir_ / "want.txt", "Cruise = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
+    write(dir_ / "behavior.txt", "(level 1 Cruise behaviors/cruise.rul)\n(level 2 Brake behaviors/brake.rul)\n");
+    write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (Speed SLOW);\n");
+    write(dir_ / "behaviors/brake.rul",
+          "(AND (GoingFast)\n     (ObstacleNear)) => (&DEL.Speed ANY) (Speed STOP);\n(&Cruise.Speed.FAST) => (Speed SLOW);\n");
+    write(dir_ / "s_shape.txt", "(SPD (SNG (STOP 0)) (SNG (SLOW 10)) (SNG (FAST 30)))\n");
+    write(dir_ / "s_ftoc.txt", "(Speed SPD)\n");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Exactly one diagnostic, at `file`:`line`, whose message contains `what`.
+  void expect_one(const std::string& file, int line, const std::string& what) {
+    const auto d = Checker().check_path(dir_.string());
+    ASSERT_EQ(d.size(), 1u) << (d.empty() ? "none" : d[0].str() + (d.size() > 1 ? " / " + d[1].str() : ""));
+    EXPECT_EQ(fs::path(d[0].file).lexically_relative(dir_).string(), file) << d[0].str();
+    EXPECT_EQ(d[0].line, line) << d[0].str();
+    EXPECT_NE(d[0].message.find(what), std::string::npos) << d[0].str();
+    EXPECT_EQ(run_tool(dir_.string()), 1);
+  }
+  static int run_tool(const std::string& arg) {
+    const std::string cmd = std::string(MRT_BRIAN_CHECK) + " " + arg + " >/dev/null 2>&1";
+    const int rc = std::system(cmd.c_str());
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(CheckerTest, CleanBaseExitsZero) {
+  EXPECT_TRUE(Checker().check_path(dir_.string()).empty());
+  EXPECT_EQ(run_tool(dir_.string()), 0);
+}
+
+TEST_F(CheckerTest, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_tool(""), 2);
+  EXPECT_EQ(run_tool((dir_ / "nonexistent").string()), 2);
+  EXPECT_EQ(run_tool(dir_.string() + " extra"), 2);
+}
+
+TEST_F(CheckerTest, ListFileResolvesFromItsDirectory) {
+  write(dir_ / "BrianConfigs.ini",
+        "ctof.txt\nshape_ctof.txt\nPredicate.ini\nPredicateActions.ini\nCando.ini\nbehavior.txt\nwant.txt\ns_ftoc.txt\ns_shape.txt\n");
+  EXPECT_EQ(run_tool((dir_ / "BrianConfigs.ini").string()), 0);
+  write(dir_ / "BrianConfigs.ini", "ctof.txt\nshape_ctof.txt\n");
+  EXPECT_EQ(run_tool((dir_ / "BrianConfigs.ini").string()), 1);
+}
+
+TEST_F(CheckerTest, RuleWithoutSemicolon) {
+  write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST)\n(ObstacleNear) => (Speed SLOW);\n");
+  expect_one("behaviors/cruise.rul", 3, "expected ';' after rule");
+}
+
+TEST_F(CheckerTest, UnknownFuzzySetType) {
+  write(dir_ / "shape_ctof.txt", "(DIST (TOL (NEAR 0 100))\n (TOX (FAR 0 100)))\n(SP (TOL (SLOW 10 30)) (TOR (FAST 10 30)))\n");
+  const auto d = Checker().check_path(dir_.string());
+  ASSERT_FALSE(d.empty());
+  EXPECT_EQ(fs::path(d[0].file).filename(), "shape_ctof.txt");
+  EXPECT_EQ(d[0].line, 2);
+  EXPECT_NE(d[0].message.find("unknown fuzzy set type"), std::string::npos);
+}
+
+TEST_F(CheckerTest, UnknownShape) {
+  write(dir_ / "ctof.txt", "(Obstacle DIST)\n(ProposedSpeed SPX)\n");
+  const auto d = Checker().check_path(dir_.string());
+  ASSERT_GE(d.size(), 1u);
+  EXPECT_EQ(fs::path(d[0].file).filename(), "ctof.txt");
+  EXPECT_EQ(d[0].line, 2);
+  EXPECT_NE(d[0].message.find("unknown shape 'SPX'"), std::string::npos);
+}
+
+TEST_F(CheckerTest, UnknownOutputShape) {
+  write(dir_ / "s_ftoc.txt", "\n(Speed SPEED)\n");
+  const auto d = Checker().check_path(dir_.string());
+  ASSERT_GE(d.size(), 1u);
+  EXPECT_EQ(fs::path(d[0].file).filename(), "s_ftoc.txt");
+  EXPECT_EQ(d[0].line, 2);
+}
+
+TEST_F(CheckerTest, UnknownLabel) {
+  write(dir_ / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\nObstacleFar = (D Obstacle FARR);\n");
+  expect_one("Predicate.ini", 2, "unknown label 'FARR'");
+}
+
+TEST_F(CheckerTest, UnknownDatum) {
+  write(dir_ / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\n\nObstacleFar = (D Obstacl FAR);\n");
+  expect_one("Predicate.ini", 3, "unknown datum 'Obstacl'");
+}
+
+TEST_F(CheckerTest, UnknownPredicate) {
+  write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST);\n(ObstacleNeer) => (Speed SLOW);\n");
+  expect_one("behaviors/cruise.rul", 3, "unknown predicate 'ObstacleNeer'");
+}
+
+TEST_F(CheckerTest, ForwardReference) {
+  write(dir_ / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\nClear = (NOT (P ObstacleFar));\nObstacleFar = (D Obstacle FAR);\n");
+  expect_one("Predicate.ini", 2, "forward reference to predicate 'ObstacleFar'");
+}
+
+TEST_F(CheckerTest, UnknownAction) {
+  write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Sped FAST);\n(ObstacleNear) => (Speed SLOW);\n");
+  expect_one("behaviors/cruise.rul", 2, "unknown action 'Sped'");
+}
+
+TEST_F(CheckerTest, UnknownActionLabel) {
+  write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (Speed SLOWER);\n");
+  expect_one("behaviors/cruise.rul", 3, "unknown label 'SLOWER'");
+}
+
+TEST_F(CheckerTest, UnknownBehaviourInProposalPredicate) {
+  write(dir_ / "behaviors/brake.rul", "(AND (GoingFast)\n     (ObstacleNear)) => (&DEL.Speed ANY) (Speed STOP);\n(&Cruse.Speed.FAST) => (Speed SLOW);\n");
+  expect_one("behaviors/brake.rul", 3, "unknown behaviour 'Cruse'");
+}
+
+TEST_F(CheckerTest, DeleteAtLevelOne) {
+  write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST);\n(ObstacleNear) =>\n (&DEL.Speed ANY) (Speed SLOW);\n");
+  expect_one("behaviors/cruise.rul", 4, "&DEL.Speed in level-1 behaviour");
+}
+
+TEST_F(CheckerTest, LevelGap) {
+  write(dir_ / "behavior.txt", "(level 1 Cruise behaviors/cruise.rul)\n\n(level 3 Brake behaviors/brake.rul)\n");
+  expect_one("behavior.txt", 3, "level gap");
+}
+
+TEST_F(CheckerTest, CandoForUndefinedBehaviour) {
+  write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNear);\nReverse = (P ObstacleNear);\n");
+  expect_one("Cando.ini", 3, "CANDO for undefined behaviour 'Reverse'");
+}
+
+TEST_F(CheckerTest, WantForUndefinedBehaviour) {
+  write(dir_ / "want.txt", "Cruis = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
+  expect_one("want.txt", 1, "WANT for undefined behaviour 'Cruis'");
+}
+
+TEST_F(CheckerTest, MissingBehaviourFile) {
+  write(dir_ / "behavior.txt", "(level 1 Cruise behaviors/cruise.rul)\n(level 2 Brake behaviors/brakes.rul)\n");
+  expect_one("behavior.txt", 2, "cannot open behaviour file");
+}
+
+TEST_F(CheckerTest, ReportsEveryProblemNotOnlyTheFirst) {
+  write(dir_ / "want.txt", "Cruis = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
+  write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNeer);\n");
+  EXPECT_EQ(Checker().check_path(dir_.string()).size(), 2u);
+}
+
+TEST(CheckerShipped, ReferenceRuleBases) {
+  // IsAac is clean; synth's `Later = (P Early);` is a deliberate forward
+  // reference (a probe of the 2009 engine's file-order evaluation).
+  EXPECT_TRUE(Checker().check_path(std::string(MRT_BRIAN_TEST_DATA) + "/isaac/bin/BrianConfigs.ini").empty());
+  const auto d = Checker().check_path(std::string(MRT_BRIAN_TEST_DATA) + "/synth");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].line, 7);
+}

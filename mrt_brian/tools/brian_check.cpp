@@ -1,0 +1,22 @@
+// brian_check <dir | BrianConfigs.ini>
+// The checker of manual §10.4.7: prints every problem as `file:line: message`.
+// Exit 0 when clean, 1 when anything is reported, 2 on usage errors.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "mrt_brian/checker.h"
+
+int main(int argc, char** argv) {
+  if (argc != 2 || std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help") {
+    std::fprintf(stderr, "usage: brian_check <dir | BrianConfigs.ini>\n");
+    return 2;
+  }
+  if (!std::filesystem::exists(argv[1])) {
+    std::fprintf(stderr, "brian_check: %s: no such file or directory\n", argv[1]);
+    return 2;
+  }
+  const auto diags = mrt::brian::Checker().check_path(argv[1]);
+  for (const auto& d : diags) std::printf("%s\n", d.str().c_str());
+  return diags.empty() ? 0 : 1;
+}
