@@ -1,0 +1,66 @@
+// A mouse read from a Linux evdev device (ROS-free): REL_X / REL_Y events
+// committed at SYN_REPORT, the device grabbed so that it does not move the
+// desktop cursor, unplug detected and the device reopened when it returns.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace mrt::mice {
+
+/// Turns a stream of evdev events into counts in the mouse frame of
+/// mrt_msgs/MouseReading (x forward along the mouse's longitudinal axis, y
+/// to its left). evdev reports REL_X to the right and REL_Y towards the
+/// user (backwards), so x = -REL_Y and y = -REL_X. Motion is committed at
+/// SYN_REPORT; after SYN_DROPPED the partial report is discarded up to the
+/// next SYN_REPORT, as the evdev protocol asks.
+class EvdevAccumulator {
+ public:
+  /// Feeds one event (type, code, value of struct input_event).
+  void feed(std::uint16_t type, std::uint16_t code, std::int32_t value);
+  /// Returns the committed counts since the last take and clears them.
+  void take(std::int64_t* dx, std::int64_t* dy);
+  std::uint64_t reports() const { return reports_; }
+  std::uint64_t dropped() const { return dropped_; }
+
+ private:
+  std::int64_t pending_x_ = 0, pending_y_ = 0;  // evdev axes, this report
+  std::int64_t dx_ = 0, dy_ = 0;                // mouse frame, committed
+  bool discarding_ = false;
+  std::uint64_t reports_ = 0;
+  std::uint64_t dropped_ = 0;
+};
+
+/// One evdev device: open (non-blocking), grab, read what is available,
+/// close on unplug (ENODEV, EOF) and reopen on request.
+class EvdevMouse {
+ public:
+  EvdevMouse(std::string path, bool grab) : path_(std::move(path)), grab_(grab) {}
+  ~EvdevMouse();
+  EvdevMouse(const EvdevMouse&) = delete;
+  EvdevMouse& operator=(const EvdevMouse&) = delete;
+
+  const std::string& path() const { return path_; }
+  bool connected() const { return fd_ >= 0; }
+  int fd() const { return fd_; }
+  /// Tries to open (and grab) the device; returns connected(). On failure
+  /// last_error() says why.
+  bool open();
+  void close();
+  /// Reads every event available now into `acc`; returns false (and
+  /// closes) when the device went away.
+  bool poll(EvdevAccumulator& acc);
+  const std::string& last_error() const { return error_; }
+  bool grabbed() const { return grabbed_; }
+  std::uint64_t connects() const { return connects_; }
+
+ private:
+  std::string path_;
+  bool grab_;
+  int fd_ = -1;
+  bool grabbed_ = false;
+  std::string error_;
+  std::uint64_t connects_ = 0;
+};
+
+}  // namespace mrt::mice
