@@ -1,5 +1,5 @@
-// AIRBoard benchmark: frames decoded per second (clean and with 10 % of the
-// bytes corrupted) against a memchr scan of the same bytes as the in-run
+// AIRBoard benchmark: frames decoded per second (clean and with 1 % of the
+// bytes corrupted: 10 % would leave almost no intact 66-byte frame) against a memchr scan of the same bytes as the in-run
 // baseline, and the command-to-set-point latency through a real pty served
 // by the emulator (p50, p99).
 #include <algorithm>
@@ -62,7 +62,7 @@ int main() {
   std::vector<uint8_t> dirty = clean;
   std::mt19937 rng(5);
   for (auto& x : dirty)
-    if (rng() % 10 == 0) x ^= static_cast<uint8_t>(1u << (rng() % 8));
+    if (rng() % 100 == 0) x ^= static_cast<uint8_t>(1u << (rng() % 8));
   // Baseline: scanning the same bytes for the start byte with memchr.
   volatile std::size_t sink = 0;
   const auto t0 = Clock::now();
@@ -79,7 +79,7 @@ int main() {
   const double baseline = reps * clean.size() / seconds_since(t0);
   std::printf("memchr_scan_bytes_per_s: %.0f B/s\n", baseline);
   decode_rate("clean", clean, baseline);
-  decode_rate("corrupt10pct", dirty, baseline);
+  decode_rate("corrupt1pct", dirty, baseline);
 
   // 2. Latency through the pty: write SET_SPEED, wait for the board's STATE
   // echoing its sequence number (the set-point is in force from then on; the

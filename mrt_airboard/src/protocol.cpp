@@ -1,18 +1,33 @@
 #include "mrt_airboard/protocol.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
 
 namespace mrt::airboard {
 
-uint16_t crc16_ccitt(const uint8_t* data, std::size_t n, uint16_t crc) {
-  for (std::size_t i = 0; i < n; ++i) {
-    crc ^= static_cast<uint16_t>(data[i]) << 8;
-    for (int b = 0; b < 8; ++b)
-      crc = (crc & 0x8000) ? static_cast<uint16_t>((crc << 1) ^ 0x1021) : static_cast<uint16_t>(crc << 1);
+namespace {
+// Table of the CRC of each byte value, for one-table-lookup-per-byte CRC;
+// identical to the bit-by-bit algorithm of the README.
+struct CrcTable {
+  uint16_t t[256];
+  CrcTable() {
+    for (int v = 0; v < 256; ++v) {
+      uint16_t c = static_cast<uint16_t>(v << 8);
+      for (int b = 0; b < 8; ++b)
+        c = (c & 0x8000) ? static_cast<uint16_t>((c << 1) ^ 0x1021) : static_cast<uint16_t>(c << 1);
+      t[v] = c;
+    }
   }
+};
+const CrcTable kCrcTable;
+}  // namespace
+
+uint16_t crc16_ccitt(const uint8_t* data, std::size_t n, uint16_t crc) {
+  for (std::size_t i = 0; i < n; ++i)
+    crc = static_cast<uint16_t>((crc << 8) ^ kCrcTable.t[((crc >> 8) ^ data[i]) & 0xFF]);
   return crc;
 }
 
@@ -51,7 +66,8 @@ void FrameDecoder::drop(std::size_t k) {
 
 void FrameDecoder::feed(const uint8_t* data, std::size_t n,
                         const std::function<void(const Frame&)>& on_frame) {
-  for (std::size_t i = 0; i < n; ++i) {
+  std::size_t i = 0;
+  while (i < n) {
     if (len_ == 0) {
       // Fast skip of garbage between frames.
       const void* p = std::memchr(data + i, proto::kStart, n - i);
@@ -63,7 +79,12 @@ void FrameDecoder::feed(const uint8_t* data, std::size_t n,
       stats_.bytes_skipped += j - i;
       i = j;
     }
-    buf_[len_++] = data[i];
+    // Copy as much as the pending frame still needs (its header first), in one go.
+    const std::size_t want = len_ < 2 ? 2 : (buf_[1] > proto::kMaxPayload ? 2 : buf_[1] + proto::kOverhead);
+    const std::size_t k = std::min(want > len_ ? want - len_ : 1, n - i);
+    std::memcpy(buf_ + len_, data + i, k);
+    len_ += k;
+    i += k;
     parse(on_frame);
   }
 }
