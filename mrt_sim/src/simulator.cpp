@@ -118,10 +118,25 @@ bool Simulator::blocked(std::size_t i, const Pose2D& from, const Pose2D& to) con
   for (std::size_t j = 0; j < robots_.size(); ++j)
     if (j != i && circle({robots_[j].pose.x, robots_[j].pose.y}, robots_[j].config.base.body_radius))
       return true;
-  auto box = [&](const Point2D& p) {
-    return std::min({p.x - world_.min_x, world_.max_x - p.x, p.y - world_.min_y, world_.max_y - p.y}) - r;
+  auto box = [&](const Point2D& p, double radius) {
+    return std::min({p.x - world_.min_x, world_.max_x - p.x, p.y - world_.min_y, world_.max_y - p.y}) - radius;
   };
-  return hits(box(a), box(b));
+  if (hits(box(a, r), box(b, r))) return true;
+  // The ball is pushed, not an obstacle, unless pushing it out of the way
+  // would drive it into a wall, goal wall, post or the bounds: a pinned
+  // ball blocks (otherwise it would be squeezed through the wall).
+  const Ball& ball = world_.ball;
+  const double touch = r + ball.radius;
+  if (!ball.enabled || !hits(dist(a, ball.position) - touch, dist(b, ball.position) - touch)) return false;
+  const double d = dist(b, ball.position);
+  if (d < 1e-12) return true;
+  const Point2D p{b.x + (ball.position.x - b.x) * touch / d, b.y + (ball.position.y - b.y) * touch / d};
+  const double tol = 1e-9;  // a ball resting against a wall is touching, not inside it
+  for (const Segment& s : solid_)
+    if (distance_to_segment(p, s) < ball.radius - tol) return true;
+  for (const Post& q : world_.posts)
+    if (dist(p, q.center) < q.radius + ball.radius - tol) return true;
+  return box(p, ball.radius) < -tol;
 }
 
 void Simulator::step() {

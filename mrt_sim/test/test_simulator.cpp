@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -229,6 +230,23 @@ TEST(Simulator, RobotPushesBall) {
   EXPECT_GE(b.position.x, r.pose.x + 0.25 + 0.11 - 1e-9);  // in front, not overlapping
   EXPECT_NEAR(b.position.y, 0.0, 1e-9);
   EXPECT_GT(b.velocity.x, 0.0);
+}
+
+TEST(Simulator, BallPinnedAgainstWallBlocksRobot) {
+  // Wall at x = 1: the ball (r 0.11) can get to x = 0.89 at most, so the
+  // robot (r 0.25) pushing it stops with its centre at 0.89 - 0.36 = 0.53.
+  Simulator sim = make("walls:\n  - [1, -5, 1, 5]\nball: {x: 0.7, y: 0, friction: 0.4, restitution: 0.6}\n",
+                       kOneRobot);
+  sim.set_twist(0, {0.5, 0.0, 0.0});
+  double max_ball_x = 0.0;
+  for (int k = 0; k < 4000; ++k) {
+    sim.step();
+    max_ball_x = std::max(max_ball_x, sim.world().ball.position.x);
+  }
+  EXPECT_LE(max_ball_x, 0.89 + 1e-9);  // never into the wall
+  EXPECT_TRUE(sim.robots()[0].bumped);
+  EXPECT_LE(sim.robots()[0].pose.x, 0.53 + 1e-9);
+  EXPECT_GT(sim.robots()[0].pose.x, 0.52);
 }
 
 TEST(Simulator, SameSeedSameOutputDifferentSeedDifferent) {

@@ -65,8 +65,9 @@ class Simulator {
   /// Advances the world by one step: moves robots along exact constant-twist
   /// arcs (wheel speeds saturated preserving direction), stops a robot whose
   /// step would collide (its footprint would overlap a wall, goal wall, post,
-  /// mover, other robot or the bounds and is not moving out of an existing
-  /// overlap; its wheels slip, so encoders count and the mice do not), moves
+  /// mover, other robot, the bounds or a ball pinned against one of those,
+  /// and is not moving out of an existing overlap; its wheels slip, so
+  /// encoders count and the mice do not), moves
   /// movers (a mover waits rather than walk into a robot) and the ball, then
   /// updates every sensor whose period has elapsed.
   void step();
