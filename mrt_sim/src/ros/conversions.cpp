@@ -352,7 +352,7 @@ MarkerArray dynamic_markers(const World& w, const std::vector<RobotState>& robot
     out.markers.push_back(c);
     Marker t = make_marker(frame, stamp, "mover_names", id++, Marker::TEXT_VIEW_FACING);
     t.pose.position = point(m.position.x, m.position.y + m.radius + 0.25, 1.0);
-    t.scale.z = 0.25;
+    t.scale.z = 0.35;
     t.color = color_of("white", 0.8f);
     t.text = m.name;
     out.markers.push_back(t);
