@@ -146,6 +146,24 @@ robots:
   EXPECT_EQ(s.datum_latitude, 45.0);
 }
 
+TEST(World, SonarMountsAndTheirErrors) {
+  const std::string head = "name: s\nbounds: [-5, -5, 5, 5]\nrobots:\n  - name: r\n    base: omni4\n"
+                           "    pose: [0, 0, 0]\n    sensors:\n      sonar: ";
+  const World w = parse_world(head + "{mounts: [{x: 0.2, y: 0, theta: 0}, {x: 0, y: 0.2, theta: 90}]}\n", "s.yaml");
+  ASSERT_EQ(w.robots[0].sensors.sonars.size(), 2u);
+  EXPECT_NEAR(w.robots[0].sensors.sonars[1].mount.theta, kPi / 2, 1e-15);
+  EXPECT_NEAR(w.robots[0].sensors.sonars[0].fov, 0.4, 1e-15);  // default, rad
+  try {  // both ways of placing sonars: the second key is reported
+    parse_world(head + "{count: 4, mounts: []}\n", "s.yaml");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_STREQ(e.what(), "s.yaml:8:33: expected either 'count' or 'mounts' in 'sonar', not both");
+  }
+  EXPECT_THROW(parse_world(head + "{count: 4, fov: 180}\n", "s.yaml"), ParseError);
+  EXPECT_THROW(parse_world(head + "{count: 4, min_range: 2, max_range: 1}\n", "s.yaml"), ParseError);
+  EXPECT_THROW(parse_world(head + "{count: 100000}\n", "s.yaml"), ParseError);
+}
+
 TEST(World, GoalWallsAndPosts) {
   Goal g;
   g.pose = Pose2D(9.0, 0.0, 0.0);  // mouth at x = 9, 2 m wide, 0.5 m deep
