@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -88,13 +89,24 @@ inline void settle(mrt::sim::Simulator& sim, const SampleFn& on) {
   }
 }
 
+/// How well the person doing the calibration pushes and turns the robot:
+/// each push really covers 0.5 m + N(0, push_sigma), each turn 2 pi +
+/// N(0, turn_sigma), but the calibration is told the nominal values.
+struct Operator {
+  double push_sigma = 0.0;  // m
+  double turn_sigma = 0.0;  // rad
+  std::uint64_t seed = 1;
+};
+
 /// The manual's protocol: ten straight 500 mm pushes (0.25 m/s for 2 s) and
 /// five counter-clockwise 360 degree turns in place (pi/2 rad/s for 4 s).
 /// The calibration is told the nominal 0.5 m and 2 pi, as a person pushing
 /// the robot would.
 inline std::vector<CalibrationRun> calibration_runs(mrt::sim::Simulator& sim, int pushes = 10,
-                                                    int turns = 5) {
+                                                    int turns = 5, const Operator& op = Operator()) {
   std::vector<CalibrationRun> runs;
+  std::mt19937_64 rng(op.seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
   const long steps_per_s = std::lround(1.0 / sim.dt());
   settle(sim, nullptr);
   for (int k = 0; k < pushes + turns; ++k) {
@@ -115,7 +127,9 @@ inline std::vector<CalibrationRun> calibration_runs(mrt::sim::Simulator& sim, in
       t.vx = 0.25;
     else
       t.omega = M_PI / 2.0;
-    drive(sim, t, (push ? 2 : 4) * steps_per_s, add);
+    const double real = push ? (0.5 + op.push_sigma * gauss(rng)) / t.vx
+                             : (2.0 * M_PI + op.turn_sigma * gauss(rng)) / t.omega;
+    drive(sim, t, std::lround(real * steps_per_s), add);
     settle(sim, add);
     runs.push_back(run);
   }

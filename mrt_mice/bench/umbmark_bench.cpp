@@ -1,0 +1,242 @@
+// UMBmark (Borenstein & Feng) of the two-mouse odometry in mrt_sim: a 4 m
+// square driven 5 times clockwise and 5 times counter-clockwise by an IANUS3
+// whose mice have realistic systematic errors (resolutions 1-2 % off the
+// nominal 400 cpi, placement a few mm and degrees off the drawing). The
+// odometry runs with the nominal parameters (before calibration) and with
+// those estimated by the calibration of manual §4.2 run in the same
+// simulator (after). Prints E_max,syst for both, the published figure of
+// the original sensor, and how many injected slips the detector flags.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "mrt_common/angle.h"
+#include "mrt_mice/calibrator.h"
+#include "mrt_mice/mice_odometry.h"
+#include "sim_protocol.h"
+
+using namespace mrt::mice;
+using mrt::common::deg_to_rad;
+
+namespace {
+
+constexpr double kSide = 4.0;      // m
+constexpr double kSpeed = 0.5;     // m/s
+constexpr double kTurnRate = 1.0;  // rad/s
+constexpr double kPublished = 114.0;  // mm, Bonarini, Matteucci, Restelli, ICINCO 2004
+
+// The drawing: mice 12 cm ahead of and behind the wheel axle, on the left
+// of the centre line, x axes forward, 400 cpi.
+MiceParams nominal() {
+  MiceParams p;
+  p.left.mount = Pose2D(0.12, 0.10, 0.0);
+  p.right.mount = Pose2D(-0.12, 0.06, 0.0);
+  p.left.counts_per_m = p.right.counts_per_m = 15748.0;
+  return p;
+}
+
+// The robot as built.
+sim::SimMice as_built(double noise) {
+  sim::SimMice m;
+  m.truth.left.mount = Pose2D(0.124, 0.097, deg_to_rad(2.0));
+  m.truth.left.counts_per_m = 15748.0 * 1.015;
+  m.truth.right.mount = Pose2D(-0.117, 0.064, deg_to_rad(-3.0));
+  m.truth.right.counts_per_m = 15748.0 * 0.982;
+  m.noise = noise;
+  return m;
+}
+
+struct Slips {
+  double rate = 0.0;  // per moving sample, one mouse loses a fraction in [min, 1] of it
+  double min_fraction = 0.2;
+  std::mt19937_64 rng{123};
+  long injected = 0, detected = 0;
+  long clean = 0, false_alarms = 0;
+};
+
+// One UMBmark run; returns the final error (odometry - truth) of each
+// odometry in `odos`, in the frame of the start pose.
+std::vector<Pose2D> run_square(std::uint64_t seed, bool clockwise, const sim::SimMice& mice,
+                               std::vector<MiceOdometry*> odos, Slips* slips) {
+  mrt::sim::Simulator s(sim::make_world(mice, seed));
+  for (auto* o : odos) o->reset();
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  bool moving = false;
+  int moving_samples = 0;
+  auto on = [&](const mrt::sim::RobotState& r) {
+    MiceCounts c = sim::to_counts(r.mice);
+    bool slip = false;
+    // A slip (manual §4.2): for part of the sample one mouse sees nothing.
+    if (slips && moving && moving_samples > 0 && slips->rate > 0 && u(slips->rng) < slips->rate) {
+      const double keep = 1.0 - (slips->min_fraction + (1.0 - slips->min_fraction) * u(slips->rng));
+      if (u(slips->rng) < 0.5) {
+        c.left_dx = std::llround(c.left_dx * keep);
+        c.left_dy = std::llround(c.left_dy * keep);
+      } else {
+        c.right_dx = std::llround(c.right_dx * keep);
+        c.right_dy = std::llround(c.right_dy * keep);
+      }
+      slip = true;
+    }
+    ++moving_samples;
+    bool flagged = false;
+    for (std::size_t i = 0; i < odos.size(); ++i) {
+      const bool f = odos[i]->update(c).detection.flagged;
+      if (i == 0) flagged = f;
+    }
+    if (slips) {
+      if (slip) {
+        ++slips->injected;
+        slips->detected += flagged;
+      } else if (!r.mice.left_fault && !r.mice.right_fault) {
+        ++slips->clean;
+        slips->false_alarms += flagged;
+      }
+    }
+  };
+  const long steps_per_s = std::lround(1.0 / s.dt());
+  sim::settle(s, on);
+  const Pose2D start = s.robots()[0].pose;
+  for (int side = 0; side < 4; ++side) {
+    moving = true;
+    moving_samples = 0;
+    sim::drive(s, {kSpeed, 0.0, 0.0}, std::lround(kSide / kSpeed * steps_per_s), on);
+    moving = false;
+    sim::settle(s, on);
+    moving = true;
+    moving_samples = 0;
+    sim::drive(s, {0.0, 0.0, clockwise ? -kTurnRate : kTurnRate},
+               std::lround(M_PI / 2 / kTurnRate * steps_per_s), on);
+    moving = false;
+    sim::settle(s, on);
+  }
+  const Pose2D truth = start.inverse() * s.robots()[0].pose;
+  std::vector<Pose2D> errors;
+  for (auto* o : odos)
+    errors.emplace_back(o->pose().x - truth.x, o->pose().y - truth.y,
+                        mrt::common::angle_diff(o->pose().theta, truth.theta));
+  return errors;
+}
+
+// E_max,syst = max over the two directions of the distance of the centre of
+// gravity of the five final errors from the origin.
+double e_max_syst(const std::vector<Pose2D>& cw, const std::vector<Pose2D>& ccw) {
+  auto cg = [](const std::vector<Pose2D>& e) {
+    double x = 0, y = 0;
+    for (const auto& p : e) {
+      x += p.x;
+      y += p.y;
+    }
+    return std::hypot(x / e.size(), y / e.size());
+  };
+  return std::max(cg(cw), cg(ccw));
+}
+
+}  // namespace
+
+int main() {
+  const auto t_start = std::chrono::steady_clock::now();
+  const sim::SimMice mice = as_built(0.003);
+
+  // Calibration: the protocol of §4.2 in the same simulator, by a careful
+  // person (pushes within +-2 mm, turns within +-0.3 degrees, 1 sigma).
+  mrt::sim::Simulator calib_sim(sim::make_world(mice, 99));
+  sim::Operator op;
+  op.push_sigma = 0.002;
+  op.turn_sigma = deg_to_rad(0.3);
+  op.seed = 17;
+  const CalibrationResult calib = calibrate(sim::calibration_runs(calib_sim, 10, 5, op), nominal());
+
+  OdometryOptions raw;
+  raw.reduce_errors = false;
+  MiceOdometry before(nominal()), before_raw(nominal(), raw), after(calib.params);
+  std::vector<Pose2D> cw_b, ccw_b, cw_r, ccw_r, cw_a, ccw_a;
+  for (int run = 0; run < 10; ++run) {
+    const bool clockwise = run < 5;
+    const auto e = run_square(1000 + run, clockwise, mice, {&after, &before, &before_raw}, nullptr);
+    (clockwise ? cw_a : ccw_a).push_back(e[0]);
+    (clockwise ? cw_b : ccw_b).push_back(e[1]);
+    (clockwise ? cw_r : ccw_r).push_back(e[2]);
+  }
+  const double eb = e_max_syst(cw_b, ccw_b) * 1000.0, ea = e_max_syst(cw_a, ccw_a) * 1000.0;
+  const double er = e_max_syst(cw_r, ccw_r) * 1000.0;
+
+  // Slip detection: the same square with slips injected in 5 % of the
+  // samples (a mouse blind for 20-100 % of a sample), calibrated parameters.
+  Slips slips;
+  slips.rate = 0.05;
+  for (int run = 0; run < 4; ++run) {
+    MiceOdometry o(calib.params);
+    run_square(2000 + run, run % 2 == 0, mice, {&o}, &slips);
+  }
+  // The same slips with the mice side by side as in the manual's Fig. 4.1
+  // (calibrated too): straight runs and turns in place move both mice
+  // across their joining line, where the constraint sees nothing.
+  Slips side_slips;
+  side_slips.rate = 0.05;
+  {
+    sim::SimMice side;
+    side.truth.left.mount = Pose2D(0.0, 0.1, 0.0);
+    side.truth.right.mount = Pose2D(0.0, -0.1, 0.0);
+    side.truth.left.counts_per_m = side.truth.right.counts_per_m = 15748.0;
+    side.noise = mice.noise;
+    for (int run = 0; run < 2; ++run) {
+      MiceOdometry o(side.truth);
+      run_square(2100 + run, run % 2 == 0, side, {&o}, &side_slips);
+    }
+  }
+  // The simulator's own faults (a mouse loses up to half of single 1 ms
+  // steps, most of them smaller than one count).
+  sim::SimMice faulty = mice;
+  faulty.fault_rate = 0.002;
+  long sim_faults = 0, sim_flagged = 0;
+  {
+    mrt::sim::Simulator s(sim::make_world(faulty, 3000));
+    MiceOdometry o(calib.params);
+    auto on = [&](const mrt::sim::RobotState& r) {
+      const bool f = o.update(sim::to_counts(r.mice)).detection.flagged;
+      if (r.mice.left_fault || r.mice.right_fault) {
+        ++sim_faults;
+        sim_flagged += f;
+      }
+    };
+    sim::drive(s, {kSpeed, 0.0, 0.0}, 40000, on);
+  }
+
+  // Cost of one sample through the whole chain.
+  MiceOdometry perf(calib.params);
+  MiceCounts c;
+  const int n = 2000000;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < n; ++i) {
+    c.left_dx = 150 + (i & 3);
+    c.left_dy = 3 - (i & 1);
+    c.right_dx = 149 + (i & 1);
+    c.right_dy = -2 + (i & 3);
+    perf.update(c);
+  }
+  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / n;
+
+  std::printf("umbmark_e_max_syst_before_calibration: %.1f mm\n", eb);
+  std::printf("umbmark_e_max_syst_before_calibration_no_reduction: %.1f mm\n", er);
+  std::printf("umbmark_e_max_syst_after_calibration: %.1f mm\n", ea);
+  std::printf("umbmark_e_max_syst_published: %.1f mm\n", kPublished);
+  std::printf("umbmark_calibration_ratio: %.4f ratio\n", ea / eb);
+  std::printf("umbmark_vs_published_ratio: %.4f ratio\n", ea / kPublished);
+  std::printf("calibration_rms_residual: %.2f counts\n", calib.rms_residual);
+  std::printf("slips_injected: %ld count\n", slips.injected);
+  std::printf("slips_detected_fraction: %.4f ratio\n",
+              slips.injected ? static_cast<double>(slips.detected) / slips.injected : 0.0);
+  std::printf("slips_detected_fraction_side_by_side_mice: %.4f ratio\n",
+              side_slips.injected ? static_cast<double>(side_slips.detected) / side_slips.injected : 0.0);
+  std::printf("false_alarm_fraction: %.5f ratio\n",
+              slips.clean ? static_cast<double>(slips.false_alarms) / slips.clean : 0.0);
+  std::printf("sim_step_faults_detected_fraction: %.4f ratio\n",
+              sim_faults ? static_cast<double>(sim_flagged) / sim_faults : 0.0);
+  std::printf("odometry_update_time: %.1f ns\n", ns);
+  std::printf("bench_wall_time: %.2f s\n",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
+  return 0;
+}
