@@ -40,6 +40,7 @@ struct NodeOptions {
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";
   bool publish_tf = true;
+  bool mirror_to_sim = false;
   bool set_gains = false;
   double kp = 0.0, ki = 0.0;
   BaseParams base;
@@ -61,6 +62,7 @@ NodeOptions load_options(ros::NodeHandle& pnh) {
   pnh.param("odom_frame", o.odom_frame, o.odom_frame);
   pnh.param("base_frame", o.base_frame, o.base_frame);
   pnh.param("publish_tf", o.publish_tf, o.publish_tf);
+  pnh.param("mirror_to_sim", o.mirror_to_sim, o.mirror_to_sim);
   o.set_gains = pnh.hasParam("gains/kp") || pnh.hasParam("gains/ki");
   pnh.param("gains/kp", o.kp, 0.05);
   pnh.param("gains/ki", o.ki, 1.0);
@@ -122,6 +124,7 @@ class AirboardNode {
     wheel_pub_ = nh.advertise<mrt_msgs::WheelState>("wheel_state", 10);
     odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     status_pub_ = nh.advertise<mrt_msgs::AirboardStatus>("airboard_status", 10);
+    if (o_.mirror_to_sim) sim_pub_ = nh.advertise<mrt_msgs::WheelCommand>("sim_wheel_cmd", 10);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &AirboardNode::on_cmd_vel, this);
     brian_sub_ = nh.subscribe("brian_commands", 10, &AirboardNode::on_brian, this);
     wheel_sub_ = nh.subscribe("wheel_cmd", 10, &AirboardNode::on_wheel_cmd, this);
@@ -369,6 +372,15 @@ class AirboardNode {
       ws.status.push_back(m.status);
     }
     wheel_pub_.publish(ws);
+    if (o_.mirror_to_sim) {
+      // Coupling to mrt_sim: the emulated wheels' measured speeds drive the
+      // simulated base (remap sim_wheel_cmd to /<robot>/wheel_cmd).
+      mrt_msgs::WheelCommand wc;
+      wc.header = ws.header;
+      wc.mode = mrt_msgs::WheelCommand::MODE_SPEED;
+      wc.speed = ws.speed;
+      sim_pub_.publish(wc);
+    }
 
     nav_msgs::Odometry od;
     od.header.stamp = stamp;
@@ -527,7 +539,7 @@ class AirboardNode {
   uint64_t commands_sent_ = 0, commands_saturated_ = 0, dropped_inputs_ = 0, nacks_ = 0, unexpected_frames_ = 0;
   uint32_t reconnects_ = 0;
 
-  ros::Publisher wheel_pub_, odom_pub_, status_pub_;
+  ros::Publisher wheel_pub_, odom_pub_, status_pub_, sim_pub_;
   ros::Subscriber cmd_sub_, brian_sub_, wheel_sub_;
   ros::Timer control_timer_, read_timer_, diag_timer_;
   diagnostic_updater::Updater diag_;
