@@ -85,7 +85,8 @@ ConfigFiles ConfigFiles::locate(const std::string& path) {
 
 std::string ConfigFiles::resolve(const std::string& p) const {
   if (p.empty() || fs::path(p).is_absolute()) return p;
-  return (fs::path(base_dir) / p).lexically_normal().string();
+  // Not lexically normalised: "a/link/../b" must go through the symlink.
+  return (fs::path(base_dir) / p).string();
 }
 
 ParsedConfig ParsedConfig::load(const ConfigFiles& files) {

@@ -1,0 +1,146 @@
+// rostest of brian_node on config/brian/harvesting: crisp data in, the
+// commands worked by hand in the rule base's README out; introspection; a
+// good and a bad ~reload (the bad one keeps the running rule base).
+#include <gtest/gtest.h>
+#include <mrt_msgs/BrianIntrospection.h>
+#include <mrt_msgs/CommandArray.h>
+#include <mrt_msgs/CrispDataArray.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+
+#include <map>
+
+namespace {
+
+class Harness {
+ public:
+  Harness() {
+    pub_ = nh_.advertise<mrt_msgs::CrispDataArray>("crisp_data", 10);
+    sub_ = nh_.subscribe("commands", 10, &Harness::on_commands, this);
+    intro_sub_ = nh_.subscribe("brian/introspection", 10, &Harness::on_intro, this);
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(20.0);
+    while ((pub_.getNumSubscribers() == 0 || sub_.getNumPublishers() == 0 || intro_sub_.getNumPublishers() == 0) &&
+           ros::WallTime::now() < deadline) {
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+  }
+
+  // Publishes one cycle's data and returns the commands of the reply.
+  std::map<std::string, double> cycle(const std::map<std::string, double>& data) {
+    mrt_msgs::CrispDataArray m;
+    m.header.stamp = ros::Time::now();
+    for (const auto& [name, value] : data) {
+      mrt_msgs::CrispData d;
+      d.name = name;
+      d.value = value;
+      d.reliability = 1.0;
+      m.data.push_back(d);
+    }
+    const std::size_t before = received_;
+    pub_.publish(m);
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+    while (received_ == before && ros::WallTime::now() < deadline) {
+      ros::spinOnce();
+      ros::WallDuration(0.002).sleep();
+    }
+    EXPECT_GT(received_, before) << "no commands";
+    // Give the introspection message (published right after) a moment.
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(0.2);
+    while (ros::WallTime::now() < until) {
+      ros::spinOnce();
+      ros::WallDuration(0.005).sleep();
+    }
+    return last_;
+  }
+
+  mrt_msgs::BrianIntrospection intro_;
+  bool have_intro_ = false;
+
+ private:
+  void on_commands(const mrt_msgs::CommandArray::ConstPtr& m) {
+    last_.clear();
+    for (const auto& c : m->commands) last_[c.name] = c.value;
+    ++received_;
+  }
+  void on_intro(const mrt_msgs::BrianIntrospection::ConstPtr& m) {
+    intro_ = *m;
+    have_intro_ = true;
+  }
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  ros::Subscriber sub_, intro_sub_;
+  std::map<std::string, double> last_;
+  std::size_t received_ = 0;
+};
+
+const std::map<std::string, double> kAutoFarTarget = {
+    {"Status", 1},        {"TargetVisible", 1}, {"TargetDistance", 200}, {"TargetAngle", 0},
+    {"Battery", 100},     {"Grasping", 0},      {"ObstacleDistance", 500}, {"ObstacleAngle", 0},
+    {"HomeDistance", 300}, {"HomeAngle", 180}};
+
+}  // namespace
+
+TEST(Harvesting, ReactsToCrispData) {
+  Harness h;
+  // Target far ahead, nothing in the way: GoToTarget FAST (75 cm/s), NORTH (0 deg).
+  auto c = h.cycle(kAutoFarTarget);
+  ASSERT_EQ(c.count("SpeedModule"), 1u);
+  EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 0.0, 1e-6);
+  EXPECT_EQ(c.count("Grasp"), 0u);
+
+  // Obstacle 50 cm ahead: AvoidObstacle (level 2) deletes both and proposes
+  // VERY_SLOW (10 cm/s) and WEST (90 deg).
+  auto in = kAutoFarTarget;
+  in["ObstacleDistance"] = 50;
+  c = h.cycle(in);
+  EXPECT_NEAR(c["SpeedModule"], 10.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 90.0, 1e-6);
+  ASSERT_TRUE(h.have_intro_);
+  bool avoid_active = false;
+  for (const auto& b : h.intro_.behaviors)
+    if (b.name == "AvoidObstacle") {
+      avoid_active = b.active;
+      EXPECT_NEAR(b.cando, 0.5, 1e-9);
+      EXPECT_NEAR(b.weight, 0.5, 1e-9);
+    }
+  EXPECT_TRUE(avoid_active);
+  ASSERT_EQ(h.intro_.proposals.size(), 2u);
+  for (const auto& p : h.intro_.proposals) EXPECT_EQ(p.behavior, "AvoidObstacle");
+
+  // Manual mode (§10.4.10): only ManualMove, straight from the remote.
+  c = h.cycle({{"Status", 0}, {"RemoteSpeed", 80}, {"RemoteAngle", 90}});
+  EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 90.0, 1e-6);
+}
+
+TEST(Harvesting, ReloadKeepsTheRuleBaseOnError) {
+  Harness h;
+  ros::NodeHandle nh;
+  ros::ServiceClient reload = nh.serviceClient<std_srvs::Trigger>("brian/reload");
+  ASSERT_TRUE(reload.waitForExistence(ros::Duration(20.0)));
+  std::string good;
+  ASSERT_TRUE(ros::param::get("~config", good));
+
+  std_srvs::Trigger t;
+  ros::param::set("brian/config", good + "/does_not_exist");
+  ASSERT_TRUE(reload.call(t));
+  EXPECT_FALSE(t.response.success);
+  EXPECT_NE(t.response.message.find("keeping the previous rule base"), std::string::npos) << t.response.message;
+  auto c = h.cycle(kAutoFarTarget);
+  EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+
+  ros::param::set("brian/config", good);
+  ASSERT_TRUE(reload.call(t));
+  EXPECT_TRUE(t.response.success) << t.response.message;
+  c = h.cycle(kAutoFarTarget);
+  EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "brian_harvesting_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
