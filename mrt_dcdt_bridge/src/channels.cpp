@@ -72,6 +72,10 @@ class StreamLink {
     waker_.Wake();
   }
   bool dead() const { return dead_; }
+  uint64_t Pending() const {
+    std::lock_guard<std::mutex> l(mu_);
+    return outq_.size() + unacked_.size();
+  }
   Counters c;
 
  private:
@@ -197,7 +201,7 @@ class StreamLink {
   std::atomic<bool> stop_{false}, dead_{false};
   net::Waker waker_;
   std::thread thread_;
-  std::mutex mu_;
+  mutable std::mutex mu_;
   std::deque<MsgPtr> outq_;
   std::deque<std::pair<uint64_t, std::vector<uint8_t>>> unacked_;
   uint64_t next_seq_ = 1;
@@ -233,6 +237,10 @@ class UdpLink {
       outq_.push_back(m);
     }
     waker_.Wake();
+  }
+  uint64_t Pending() const {
+    std::lock_guard<std::mutex> l(mu_);
+    return outq_.size() + pending_size_;
   }
   Counters c;
 
@@ -314,7 +322,7 @@ class UdpLink {
         auto b = EncodeMsg(*m, seq);
         SendTo(b);
         ++c.sent;
-        if (retx) pending_[seq] = Pending{std::move(b), 1, now + std::chrono::milliseconds(o_.retransmit_interval_ms)};
+        if (retx) pending_[seq] = Retx{std::move(b), 1, now + std::chrono::milliseconds(o_.retransmit_interval_ms)};
       }
       for (auto it = pending_.begin(); it != pending_.end();) {
         if (it->second.due > now) {
@@ -332,11 +340,15 @@ class UdpLink {
         it->second.due = now + std::chrono::milliseconds(o_.retransmit_interval_ms);
         ++it;
       }
+      {
+        std::lock_guard<std::mutex> l(mu_);
+        pending_size_ = pending_.size();
+      }
       c.connected = true;
     }
   }
 
-  struct Pending {
+  struct Retx {
     std::vector<uint8_t> bytes;
     int tries;
     Clock::time_point due;
@@ -350,9 +362,10 @@ class UdpLink {
   std::atomic<bool> stop_{false};
   net::Waker waker_;
   std::thread thread_;
-  std::mutex mu_;
+  mutable std::mutex mu_;
   std::deque<MsgPtr> outq_;
-  std::map<uint64_t, Pending> pending_;
+  std::map<uint64_t, Retx> pending_;
+  size_t pending_size_ = 0;
   uint64_t next_seq_ = 1;
 };
 
@@ -410,6 +423,7 @@ class IpChannel : public Channel {
     stream_->c.Fill(&s);
     udp_->c.Fill(&s);
     s.connected = stream_->c.connected;
+    s.pending = stream_->Pending() + udp_->Pending();
     return s;
   }
 
@@ -440,6 +454,7 @@ class StreamChannel : public Channel {
     ChannelStats s;
     s.name = name_;
     stream_->c.Fill(&s);
+    s.pending = stream_->Pending();
     return s;
   }
 

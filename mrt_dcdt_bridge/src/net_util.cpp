@@ -95,6 +95,15 @@ int TcpConnect(const std::string& local_ip, const std::string& ip, int port, int
       r = err == 0 ? 0 : -1;
     }
   }
+  if (r == 0) {
+    // Dialling a free port of the ephemeral range can connect a socket to
+    // itself (TCP simultaneous open); that is not a peer.
+    sockaddr_in me{}, peer{};
+    socklen_t ml = sizeof me, pl = sizeof peer;
+    getsockname(fd, reinterpret_cast<sockaddr*>(&me), &ml);
+    getpeername(fd, reinterpret_cast<sockaddr*>(&peer), &pl);
+    if (me.sin_port == peer.sin_port && me.sin_addr.s_addr == peer.sin_addr.s_addr) r = -1;
+  }
   if (r != 0) {
     ::close(fd);
     return -1;

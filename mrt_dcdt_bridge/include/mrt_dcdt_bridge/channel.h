@@ -20,6 +20,7 @@ struct ChannelStats {
   bool connected = false;
   int peer_agora = 0;
   uint64_t sent = 0, received = 0, resent = 0, dropped = 0, errors = 0, reconnects = 0;
+  uint64_t pending = 0;  ///< queued or sent-but-unacknowledged messages
 };
 
 class Channel {

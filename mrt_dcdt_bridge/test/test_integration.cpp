@@ -1,0 +1,279 @@
+// Integration tests with separate dcdt_agora processes on loopback: inner
+// links, link vs bridge between two communities, a cycle that must not loop,
+// a guaranteed TCP link killed and restarted mid-stream, Finder discovery.
+#include <gtest/gtest.h>
+
+#include <poll.h>
+
+#include <atomic>
+#include <set>
+
+#include "process.h"
+#include "test_util.h"
+
+using namespace dcdt_test;
+
+namespace {
+
+const std::string kAgora = DCDT_AGORA;
+
+std::unique_ptr<Process> Agora(std::vector<std::string> args) {
+  args.insert(args.begin(), kAgora);
+  return std::make_unique<Process>(args);
+}
+
+bool WaitReady(const std::string& out, int timeout_ms = 5000) {
+  return WaitFor([&] { return Slurp(out).find("ready agora=") != std::string::npos; }, timeout_ms);
+}
+
+std::string AgoraIdOf(const std::string& out) {
+  auto l = Lines(out, "ready agora=");
+  return l.empty() ? "" : l[0].substr(12);
+}
+
+std::string Group() { return "239.255." + std::to_string(::getpid() % 250 + 1) + ".7"; }
+
+std::string NetLine(int port) { return "127.0.0.1 " + Group() + " " + std::to_string(port) + "\nPostOffice: SLWB\n"; }
+
+std::string IpLine(const char* mode, int level, int local, int remote) {
+  return std::string("ip ") + mode + " " + std::to_string(level) + " 127.0.0.1 " + std::to_string(local) +
+         " 127.0.0.1 " + std::to_string(remote) + "\n";
+}
+
+TEST(Integration, ThreeAgorasOnOneMachineThroughInnerLinks) {
+  const std::string d = TempDir("three");
+  auto b = Agora({"--inner-dir", d, "--subscribe", "MSG_FROM_VISION:local", "--expect", "10", "--duration", "15",
+                  "--out", d + "/b.txt"});
+  auto c = Agora({"--inner-dir", d, "--subscribe", "MSG_FROM_VISION", "--expect", "10", "--duration", "15", "--out",
+                  d + "/c.txt"});
+  ASSERT_TRUE(WaitReady(d + "/b.txt"));
+  ASSERT_TRUE(WaitReady(d + "/c.txt"));
+  auto a = Agora({"--inner-dir", d, "--publish", "MSG_FROM_VISION", "--count", "10", "--rate", "200", "--wait-peers",
+                  "2", "--duration", "15", "--out", d + "/a.txt"});
+  EXPECT_EQ(a->Wait(15000), 0);
+  EXPECT_EQ(b->Wait(15000), 0);
+  EXPECT_EQ(c->Wait(15000), 0);
+  const std::string id = AgoraIdOf(d + "/a.txt");
+  for (const char* f : {"/b.txt", "/c.txt"}) {
+    auto recv = Lines(d + f, "recv ");
+    ASSERT_EQ(recv.size(), 10u) << Slurp(d + f);
+    for (size_t i = 0; i < recv.size(); ++i) {
+      EXPECT_EQ(Field(recv[i], "agora"), id);
+      EXPECT_EQ(Field(recv[i], "seq"), std::to_string(i + 1));
+      EXPECT_EQ(Field(recv[i], "scope"), "local");
+      EXPECT_EQ(Field(recv[i], "payload"), "message " + std::to_string(i));
+    }
+  }
+}
+
+// Community 1 = {A1 (network), B1}, community 2 = {A2 (network), B2}; A1 and
+// A2 are joined by one ip channel. B1 publishes type 22, A1 type 21; B2
+// listens to both.
+void RunTwoCommunities(const char* mode, size_t expect21, size_t expect22, const char* scope21) {
+  const std::string d1 = TempDir("c1"), d2 = TempDir("c2");
+  int p1 = FreePort(), p2 = FreePort();
+  if (p1 > p2) std::swap(p1, p2);
+  WriteFile(d1 + "/a1.cfg", NetLine(FreePort()) + IpLine(mode, 0, p1, p2));
+  WriteFile(d2 + "/a2.cfg", NetLine(FreePort()) + IpLine(mode, 0, p2, p1));
+  auto b2 = Agora({"--inner-dir", d2, "--subscribe", "21", "--subscribe", "22", "--duration", "3", "--out",
+                   d2 + "/b2.txt"});
+  ASSERT_TRUE(WaitReady(d2 + "/b2.txt"));
+  auto a2 = Agora({"--config", d2 + "/a2.cfg", "--inner-dir", d2, "--no-finder", "--subscribe", "99", "--duration",
+                   "3", "--out", d2 + "/a2.txt"});
+  ASSERT_TRUE(WaitReady(d2 + "/a2.txt"));
+  auto a1 = Agora({"--config", d1 + "/a1.cfg", "--inner-dir", d1, "--no-finder", "--publish", "21", "--count", "10",
+                   "--rate", "100", "--wait-peers", "2", "--subscribe", "99", "--duration", "2.5", "--out",
+                   d1 + "/a1.txt"});
+  ASSERT_TRUE(WaitReady(d1 + "/a1.txt"));
+  auto b1 = Agora({"--inner-dir", d1, "--publish", "22", "--count", "10", "--rate", "100", "--wait-peers", "1",
+                   "--duration", "5", "--out", d1 + "/b1.txt"});
+  EXPECT_EQ(b1->Wait(8000), 0);
+  a1->Wait(8000);
+  a2->Wait(8000);
+  b2->Wait(8000);
+  size_t n21 = 0, n22 = 0;
+  for (const auto& l : Lines(d2 + "/b2.txt", "recv ")) {
+    if (Field(l, "type") == "21") {
+      ++n21;
+      EXPECT_EQ(Field(l, "scope"), scope21) << l;
+      EXPECT_EQ(Field(l, "hops"), "1") << l;
+    } else {
+      ++n22;
+    }
+  }
+  EXPECT_EQ(n21, expect21) << Slurp(d2 + "/b2.txt") << Slurp(d1 + "/a1.txt");
+  EXPECT_EQ(n22, expect22) << Slurp(d2 + "/b2.txt") << Slurp(d1 + "/a1.txt");
+}
+
+TEST(Integration, TcpLinkForwardsOnlyMessagesOfTheLinkedAgora) {
+  // link: only A1's own messages cross; B2 sees them as REMOTE.
+  RunTwoCommunities("link", 10, 0, "remote");
+}
+
+TEST(Integration, BridgeForwardsTheWholeCommunity) {
+  // bridge: B1's messages cross too; B2 sees them as LOCAL.
+  RunTwoCommunities("bridge", 10, 10, "local");
+}
+
+TEST(Integration, BridgesInACycleDoNotLoop) {
+  const std::string d = TempDir("cycle");
+  const int ab = FreePort(), ba = FreePort(), ac = FreePort(), ca = FreePort(), bc = FreePort(), cb = FreePort();
+  const char* br = "bridge";
+  WriteFile(d + "/a.cfg", NetLine(FreePort()) + IpLine(br, 15, ab, ba) + IpLine(br, 15, ac, ca));
+  WriteFile(d + "/b.cfg", NetLine(FreePort()) + IpLine(br, 15, ba, ab) + IpLine(br, 15, bc, cb));
+  WriteFile(d + "/c.cfg", NetLine(FreePort()) + IpLine(br, 15, ca, ac) + IpLine(br, 15, cb, bc));
+  std::vector<std::unique_ptr<Process>> ps;
+  for (const char* n : {"b", "c"})
+    ps.push_back(Agora({"--config", d + "/" + n + ".cfg", "--no-inner", "--no-finder", "--subscribe", "18",
+                        "--duration", "3", "--out", d + "/" + n + ".txt"}));
+  auto a = Agora({"--config", d + "/a.cfg", "--no-inner", "--no-finder", "--subscribe", "18", "--publish", "18",
+                  "--count", "20", "--rate", "200", "--wait-peers", "2", "--duration", "2.5", "--out", d + "/a.txt"});
+  a->Wait(8000);
+  for (auto& p : ps) p->Wait(8000);
+  // A's subscriber gets A's messages once, from its own PostOffice (hops 0),
+  // never again after a trip round the triangle.
+  auto own = Lines(d + "/a.txt", "recv ");
+  EXPECT_EQ(own.size(), 20u) << Slurp(d + "/a.txt");
+  for (auto& l : own) EXPECT_EQ(Field(l, "hops"), "0") << l;
+  uint64_t dups = 0;
+  for (const char* n : {"/b.txt", "/c.txt"}) {
+    auto recv = Lines(d + n, "recv ");
+    std::set<std::string> seqs;
+    for (auto& l : recv) seqs.insert(Field(l, "seq"));
+    EXPECT_EQ(recv.size(), 20u) << Slurp(d + n);
+    EXPECT_EQ(seqs.size(), 20u);
+    auto st = Lines(d + n, "stats ");
+    if (!st.empty()) dups += std::stoull(Field(st[0], "duplicates"));
+  }
+  // Each copy that came round the triangle was recognised and dropped.
+  EXPECT_GT(dups, 0u);
+}
+
+// A TCP relay between two Agoras that the test can kill and restart.
+class TcpProxy {
+ public:
+  TcpProxy(int listen_port, int target_port) : listen_port_(listen_port), target_port_(target_port) {
+    thread_ = std::thread([this] { Loop(); });
+  }
+  ~TcpProxy() {
+    stop_ = true;
+    thread_.join();
+  }
+  void Kill() { down_ = true; }
+  void Restart() { down_ = false; }
+  std::atomic<uint64_t> relayed{0};
+  std::atomic<int> sessions{0}, accepts{0};
+
+ private:
+  void Loop() {
+    while (!stop_) {
+      if (down_) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        continue;
+      }
+      int l = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+      int one = 1;
+      setsockopt(l, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+      sockaddr_in a{};
+      a.sin_family = AF_INET;
+      a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+      a.sin_port = htons(static_cast<uint16_t>(listen_port_));
+      if (::bind(l, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(l, 4) != 0) {
+        ::close(l);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        continue;
+      }
+      while (!stop_ && !down_) {
+        pollfd p{l, POLLIN, 0};
+        if (::poll(&p, 1, 20) != 1) continue;
+        int in = ::accept4(l, nullptr, nullptr, SOCK_CLOEXEC);
+        if (in < 0) continue;
+        ++accepts;
+        int out = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        sockaddr_in t = a;
+        t.sin_port = htons(static_cast<uint16_t>(target_port_));
+        if (::connect(out, reinterpret_cast<sockaddr*>(&t), sizeof t) != 0) {
+          ::close(in);
+          ::close(out);
+          continue;
+        }
+        ++sessions;
+        Relay(in, out);
+        ::close(in);
+        ::close(out);
+      }
+      ::close(l);
+    }
+  }
+  void Relay(int x, int y) {
+    char buf[16384];
+    while (!stop_ && !down_) {
+      pollfd p[2] = {{x, POLLIN, 0}, {y, POLLIN, 0}};
+      if (::poll(p, 2, 20) <= 0) continue;
+      for (int k = 0; k < 2; ++k) {
+        if (!(p[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+        ssize_t r = ::read(p[k].fd, buf, sizeof buf);
+        if (r <= 0) return;
+        if (::send(k == 0 ? y : x, buf, static_cast<size_t>(r), MSG_NOSIGNAL) != r) return;
+        relayed += static_cast<uint64_t>(r);
+      }
+    }
+  }
+  int listen_port_, target_port_;
+  std::atomic<bool> stop_{false}, down_{false};
+  std::thread thread_;
+};
+
+TEST(Integration, GuaranteedTcpLinkKilledAndRestartedLosesNothing) {
+  const std::string d = TempDir("kill");
+  std::vector<int> p = {FreePort(), FreePort(), FreePort()};
+  std::sort(p.begin(), p.end());
+  const int pa = p[0], pproxy = p[1], pb = p[2];  // A dials (pa < pproxy), B accepts (pb > pa)
+  WriteFile(d + "/a.cfg", NetLine(FreePort()) + IpLine("link", 0, pa, pproxy));
+  WriteFile(d + "/b.cfg", NetLine(FreePort()) + IpLine("link", 0, pb, pa));
+  TcpProxy proxy(pproxy, pb);
+  const int kCount = 3000;
+  auto b = Agora({"--config", d + "/b.cfg", "--no-inner", "--no-finder", "--subscribe", "21", "--expect",
+                  std::to_string(kCount), "--duration", "20", "--out", d + "/b.txt"});
+  ASSERT_TRUE(WaitReady(d + "/b.txt"));
+  auto a = Agora({"--config", d + "/a.cfg", "--no-inner", "--no-finder", "--publish", "21", "--warranty",
+                  "guaranteed", "--count", std::to_string(kCount), "--rate", "1000", "--wait-peers", "1",
+                  "--duration", "20", "--out", d + "/a.txt"});
+  // Kill the link mid-stream, keep it down a while, restart it.
+  ASSERT_TRUE(WaitFor([&] { return Lines(d + "/b.txt", "recv ").size() >= 300; }, 10000));
+  proxy.Kill();
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  const size_t during = Lines(d + "/b.txt", "recv ").size();
+  proxy.Restart();
+  EXPECT_EQ(b->Wait(20000), 0) << Slurp(d + "/b.txt").substr(0, 2000);
+  a->Wait(20000);
+  auto recv = Lines(d + "/b.txt", "recv ");
+  ASSERT_EQ(recv.size(), static_cast<size_t>(kCount)) << Slurp(d + "/a.txt") << "proxy sessions " << proxy.sessions << " accepts " << proxy.accepts;
+  for (int i = 0; i < kCount; ++i) ASSERT_EQ(Field(recv[i], "seq"), std::to_string(i + 1));
+  EXPECT_LT(during, static_cast<size_t>(kCount)) << "the kill happened after the stream ended";
+  EXPECT_GE(proxy.sessions.load(), 2);
+}
+
+TEST(Integration, FinderDiscoversAgorasByMulticastOnLoopback) {
+  const std::string da = TempDir("fa"), db = TempDir("fb");
+  const int port = FreePort();
+  WriteFile(da + "/f.cfg", NetLine(port));
+  auto b = Agora({"--config", da + "/f.cfg", "--inner-dir", db, "--subscribe", "23", "--expect", "5", "--duration",
+                  "10", "--out", db + "/b.txt"});
+  ASSERT_TRUE(WaitReady(db + "/b.txt"));
+  auto a = Agora({"--config", da + "/f.cfg", "--inner-dir", da, "--publish", "23", "--count", "5", "--rate", "100",
+                  "--wait-peers", "1", "--duration", "10", "--out", da + "/a.txt"});
+  EXPECT_EQ(b->Wait(12000), 0) << Slurp(db + "/b.txt") << Slurp(da + "/a.txt");
+  a->Wait(12000);
+  auto recv = Lines(db + "/b.txt", "recv ");
+  ASSERT_EQ(recv.size(), 5u);
+  for (auto& l : recv) EXPECT_EQ(Field(l, "scope"), "remote");  // Finder channels are links
+}
+
+TEST(Integration, FinderAcrossNetworkNamespaces) {
+  GTEST_SKIP() << "Finder discovery across two network namespaces needs a veth pair with non-loopback "
+                  "addresses; this environment allows loopback traffic only. Discovery is tested on "
+                  "loopback multicast (FinderDiscoversAgorasByMulticastOnLoopback).";
+}
+
+}  // namespace

@@ -1,0 +1,209 @@
+// Channels in-process: UDP delivery warranties through a lossy relay, and a
+// serial (RS-232) link over a pair of pseudo-terminals.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <termios.h>
+
+#include <atomic>
+#include <map>
+#include <set>
+
+#include "mrt_dcdt_bridge/agora.h"
+#include "mrt_dcdt_bridge/frame.h"
+#include "process.h"
+#include "test_util.h"
+
+using namespace mrt::dcdt;
+using namespace dcdt_test;
+
+namespace {
+
+// A Member used from the test thread to share messages.
+class Sender : public Member {
+ public:
+  explicit Sender(Agora* a) : Member(a) {}
+  void DoYourJob(int) override {}
+  void Send(int type, int warranty, int i) {
+    Msg* m = CreateMsg(type, warranty);
+    m->SetPayload(std::to_string(i));
+    ShareMsg(m);
+  }
+};
+
+AgoraOptions NetOptions(const std::string& channel_line) {
+  AgoraOptions o;
+  o.network = true;
+  o.inner_links = false;
+  o.finder = false;
+  o.config = ParseAgoraConfig("127.0.0.1 239.255.0.1 9\nPostOffice: SLWB\n" + channel_line, "test.cfg");
+  return o;
+}
+
+// Relays datagrams between two ports; in the a->b direction drops the first
+// copy of every acknowledged message and every second unacknowledged one.
+class LossyUdpRelay {
+ public:
+  LossyUdpRelay(int port, int pa, int pb) : pa_(pa), pb_(pb) {
+    fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(static_cast<uint16_t>(port));
+    ::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a);
+    thread_ = std::thread([this] { Loop(); });
+  }
+  ~LossyUdpRelay() {
+    stop_ = true;
+    thread_.join();
+    ::close(fd_);
+  }
+
+ private:
+  void Loop() {
+    std::vector<uint8_t> buf(65536);
+    std::set<uint64_t> seen;
+    int unacked = 0;
+    while (!stop_) {
+      pollfd p{fd_, POLLIN, 0};
+      if (::poll(&p, 1, 20) != 1) continue;
+      sockaddr_in from{};
+      socklen_t fl = sizeof from;
+      ssize_t r = ::recvfrom(fd_, buf.data(), buf.size(), 0, reinterpret_cast<sockaddr*>(&from), &fl);
+      if (r <= 0) continue;
+      const bool from_a = ntohs(from.sin_port) == pa_;
+      if (from_a) {
+        Frame f;
+        MsgFrame mf;
+        if (DecodeDatagram(buf.data(), static_cast<size_t>(r), &f) && f.kind == FrameKind::MSG &&
+            DecodeMsgBody(f.body, &mf)) {
+          if (mf.link_seq != 0 ? seen.insert(mf.link_seq).second : (++unacked % 2 == 0)) continue;  // lost
+        }
+      }
+      sockaddr_in to = from;
+      to.sin_port = htons(static_cast<uint16_t>(from_a ? pb_ : pa_));
+      ::sendto(fd_, buf.data(), static_cast<size_t>(r), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+    }
+  }
+  int fd_;
+  int pa_, pb_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+TEST(Links, UdpWarrantiesNoneLosesRetransmitRecovers) {
+  const int pa = FreePort(), pb = FreePort(), pr = FreePort();
+  LossyUdpRelay relay(pr, pa, pb);
+  auto line = [](int l, int r) {
+    return "ip link 0 127.0.0.1 " + std::to_string(l) + " 127.0.0.1 " + std::to_string(r) + "\n";
+  };
+  Agora a(NetOptions(line(pa, pr)));
+  Agora b(NetOptions(line(pb, pr)));
+  Sender s(&a);
+  a.AddMember(&s);
+  MailBox box;
+  box.member_id = 500;
+  b.GetPostOffice().Register(&box);
+  b.GetPostOffice().Subscribe(500, 40, DCDT_ALL_MSG);
+  b.GetPostOffice().Subscribe(500, 41, DCDT_ALL_MSG);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // both UDP sockets bound
+  for (int i = 0; i < 20; ++i) s.Send(40, DCDT_DW_NONE, i);
+  for (int i = 0; i < 20; ++i) s.Send(41, DCDT_DW_RETRANSMIT, i);
+  std::map<int, std::set<std::string>> got;
+  int total = 0;
+  WaitFor([&] {
+    while (auto m = b.GetPostOffice().Pop(&box)) {
+      got[m->ReadType()].insert(m->PayloadString());
+      ++total;
+    }
+    return got[41].size() == 20;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));  // late copies would show up now
+  while (auto m = b.GetPostOffice().Pop(&box)) {
+    got[m->ReadType()].insert(m->PayloadString());
+    ++total;
+  }
+  EXPECT_EQ(got[40].size(), 10u);  // no warranty: every second datagram lost for good
+  EXPECT_EQ(got[41].size(), 20u);  // retransmission recovers all
+  EXPECT_EQ(total, 30);            // and duplicates never reach Members
+  auto st = a.Stats();
+  ASSERT_EQ(st.channels.size(), 1u);
+  EXPECT_GE(st.channels[0].resent, 20u);
+  b.GetPostOffice().Unregister(&box);
+}
+
+// Copies bytes between two pty masters: a null-modem cable.
+class NullModem {
+ public:
+  NullModem() {
+    char n1[64], n2[64];
+    termios t{};
+    cfmakeraw(&t);
+    ok = openpty(&m1_, &s1_, n1, &t, nullptr) == 0 && openpty(&m2_, &s2_, n2, &t, nullptr) == 0;
+    if (ok) {
+      dev1 = n1;
+      dev2 = n2;
+      thread_ = std::thread([this] { Loop(); });
+    }
+  }
+  ~NullModem() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+    for (int fd : {m1_, s1_, m2_, s2_})
+      if (fd >= 0) ::close(fd);
+  }
+  bool ok = false;
+  std::string dev1, dev2;
+
+ private:
+  void Loop() {
+    char buf[4096];
+    while (!stop_) {
+      pollfd p[2] = {{m1_, POLLIN, 0}, {m2_, POLLIN, 0}};
+      if (::poll(p, 2, 20) <= 0) continue;
+      for (int k = 0; k < 2; ++k) {
+        if (!(p[k].revents & POLLIN)) continue;
+        ssize_t r = ::read(p[k].fd, buf, sizeof buf);
+        if (r > 0) {
+          [[maybe_unused]] ssize_t w = ::write(k == 0 ? m2_ : m1_, buf, static_cast<size_t>(r));
+        }
+      }
+    }
+  }
+  int m1_ = -1, s1_ = -1, m2_ = -1, s2_ = -1;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+TEST(Links, SerialLinkOverPseudoTerminals) {
+  NullModem cable;
+  if (!cable.ok) GTEST_SKIP() << "no pseudo-terminals available";
+  Agora a(NetOptions("ser link 0 " + cable.dev1 + "\n"));
+  Agora b(NetOptions("ser bridge 0 " + cable.dev2 + "\n"));
+  Sender s(&a);
+  a.AddMember(&s);
+  MailBox box;
+  box.member_id = 600;
+  b.GetPostOffice().Register(&box);
+  b.GetPostOffice().Subscribe(600, 32, DCDT_ALL_MSG);
+  ASSERT_TRUE(WaitFor([&] {
+    auto sa = a.Stats(), sb = b.Stats();
+    return sa.channels[0].peer_agora == b.GetAgoraID() && sb.channels[0].peer_agora == a.GetAgoraID();
+  }, 5000));
+  for (int i = 0; i < 50; ++i) s.Send(32, i % 3, i);  // every warranty
+  std::vector<std::string> got;
+  WaitFor([&] {
+    while (auto m = b.GetPostOffice().Pop(&box)) {
+      got.push_back(m->PayloadString());
+      EXPECT_FALSE(m->header().remote);  // arrived by a bridge channel: LOCAL
+    }
+    return got.size() == 50;
+  });
+  ASSERT_EQ(got.size(), 50u);
+  for (int i = 0; i < 50; ++i) EXPECT_EQ(got[i], std::to_string(i));
+  b.GetPostOffice().Unregister(&box);
+}
+
+}  // namespace
