@@ -1,14 +1,22 @@
 // mice_calibrate --in runs.csv --out params.yaml [--base base.yaml]
+// mice_calibrate --push-bag p1.bag ... --turn-bag t1.bag ... --out params.yaml
 //
 // The calibration of manual §4.2: from straight pushes and turns in place
-// (CSV run,kind,amount,left_dx,left_dy,right_dx,right_dy) estimates D,
-// sigma_l, sigma_r, delta, the mouse positions and resolutions, writes the
-// YAML parameter file and prints the residuals. Bad input: exit 2.
+// (CSV run,kind,amount,left_dx,left_dy,right_dx,right_dy, or one bag of
+// mrt_msgs/MiceReading per run) estimates D, sigma_l, sigma_r, delta, the
+// mouse positions and resolutions, writes the YAML parameter file and
+// prints the residuals. Bad input: exit 2.
+#include <mrt_msgs/MiceReading.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <vector>
+#include <cstdlib>
 
 #include "mrt_common/angle.h"
 #include "mrt_mice/mice_io.h"
@@ -16,17 +24,60 @@
 namespace {
 int usage(const char* msg) {
   std::cerr << "mice_calibrate: " << msg << "\n"
-            << "usage: mice_calibrate --in runs.csv --out params.yaml [--base base.yaml]\n";
+            << "usage: mice_calibrate [--in runs.csv] [--push-bag run.bag]... [--turn-bag run.bag]...\n"
+               "         [--push-distance 0.5] [--turn-angle-deg 360] [--topic mice]\n"
+               "         --out params.yaml [--base base.yaml]\n";
   return 2;
+}
+
+// One run from a bag: the sum of every mrt_msgs/MiceReading in it (on
+// `topic` if not empty).
+mrt::mice::CalibrationRun run_from_bag(const std::string& path, bool push, double amount,
+                                       const std::string& topic) {
+  mrt::mice::CalibrationRun run;
+  run.kind = push ? mrt::mice::CalibrationRun::Kind::kPush : mrt::mice::CalibrationRun::Kind::kTurn;
+  run.amount = amount;
+  run.source = path;
+  int n = 0;
+  try {
+    rosbag::Bag bag(path, rosbag::bagmode::Read);
+    rosbag::View view(bag, rosbag::TypeQuery("mrt_msgs/MiceReading"));
+    for (const rosbag::MessageInstance& m : view) {
+      if (!topic.empty() && m.getTopic() != topic && m.getTopic() != "/" + topic) continue;
+      const auto r = m.instantiate<mrt_msgs::MiceReading>();
+      if (!r) continue;
+      run.counts.left_dx += r->left.dx;
+      run.counts.left_dy += r->left.dy;
+      run.counts.right_dx += r->right.dx;
+      run.counts.right_dy += r->right.dy;
+      ++n;
+    }
+  } catch (const rosbag::BagException& e) {
+    throw mrt::common::ParseError(path, 0, 0, std::string("cannot read the bag: ") + e.what());
+  }
+  if (n == 0)
+    throw mrt::common::ParseError(path, 0, 0, "expected mrt_msgs/MiceReading messages" +
+                                                  (topic.empty() ? std::string() : " on '" + topic + "'"));
+  return run;
 }
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string in_path, out_path, base_path;
+  std::string in_path, out_path, base_path, topic;
+  std::vector<std::string> push_bags, turn_bags;
+  double push_distance = 0.5, turn_angle_deg = 360.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if ((a == "--in" || a == "--out" || a == "--base") && i + 1 < argc) {
-      (a == "--in" ? in_path : a == "--out" ? out_path : base_path) = argv[++i];
+    if ((a == "--in" || a == "--out" || a == "--base" || a == "--topic") && i + 1 < argc) {
+      (a == "--in" ? in_path : a == "--out" ? out_path : a == "--base" ? base_path : topic) = argv[++i];
+    } else if ((a == "--push-bag" || a == "--turn-bag") && i + 1 < argc) {
+      (a == "--push-bag" ? push_bags : turn_bags).push_back(argv[++i]);
+    } else if ((a == "--push-distance" || a == "--turn-angle-deg") && i + 1 < argc) {
+      char* end = nullptr;
+      const double v = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(v != 0.0) || !std::isfinite(v))
+        return usage((a + " needs a non-zero number").c_str());
+      (a == "--push-distance" ? push_distance : turn_angle_deg) = v;
     } else if (a == "-h" || a == "--help") {
       usage("help");
       return 0;
@@ -34,17 +85,23 @@ int main(int argc, char** argv) {
       return usage(("unknown or incomplete argument '" + a + "'").c_str());
     }
   }
-  if (in_path.empty() || out_path.empty()) return usage("--in and --out are required");
+  if (out_path.empty()) return usage("--out is required");
+  if (in_path.empty() && push_bags.empty() && turn_bags.empty())
+    return usage("give the runs with --in or --push-bag/--turn-bag");
   using mrt::common::rad_to_deg;
   try {
     mrt::mice::MiceParams base;
     if (!base_path.empty()) base = mrt::mice::load_params(base_path);
-    const auto runs = mrt::mice::read_calibration_csv(in_path);
+    std::vector<mrt::mice::CalibrationRun> runs;
+    if (!in_path.empty()) runs = mrt::mice::read_calibration_csv(in_path);
+    for (const auto& b : push_bags) runs.push_back(run_from_bag(b, true, push_distance, topic));
+    for (const auto& b : turn_bags)
+      runs.push_back(run_from_bag(b, false, mrt::common::deg_to_rad(turn_angle_deg), topic));
     mrt::mice::CalibrationResult res;
     try {
       res = mrt::mice::calibrate(runs, base);
     } catch (const std::invalid_argument& e) {
-      throw mrt::common::ParseError(in_path, 0, 0, e.what());
+      throw mrt::common::ParseError(in_path.empty() ? "runs" : in_path, 0, 0, e.what());
     }
     std::ofstream out(out_path);
     if (!out) {
