@@ -1,0 +1,69 @@
+// brian_run end to end: the reference trace of synth reproduced through the
+// tool, and bad input reported with file and line, exit 2.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "mrt_brian/lexer.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ToolRun {
+  int rc;
+  std::string out, err;
+};
+
+ToolRun run_tool(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path();
+  const std::string o = (dir / ("brian_run_out_" + std::to_string(::getpid()))).string();
+  const std::string e = (dir / ("brian_run_err_" + std::to_string(::getpid()))).string();
+  const int rc = std::system((std::string(MRT_BRIAN_RUN) + " " + args + " >" + o + " 2>" + e).c_str());
+  ToolRun r{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, mrt::brian::read_text_file(o), mrt::brian::read_text_file(e)};
+  fs::remove(o);
+  fs::remove(e);
+  return r;
+}
+
+const std::string kData = MRT_BRIAN_TEST_DATA;
+
+}  // namespace
+
+TEST(BrianRun, CommandsOfSynthMatchTheReferenceTrace) {
+  const ToolRun r = run_tool("--profile legacy " + kData + "/synth " + kData + "/synth/input.txt");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  // The CMD lines of ../shared/peer/brian/synth/expected.trace.
+  EXPECT_EQ(r.out,
+            "=== CYCLE 0\n\nCMD Heading 220.000000\nCMD Speed 20.000000\n"
+            "=== CYCLE 1\n\nCMD Heading 220.000000\nCMD Mark 1.000000\nCMD Mark2 1.000000\nCMD Mark3 1.000000\nCMD Speed 30.000000\n"
+            "=== CYCLE 2\n\nCMD Heading 220.000000\nCMD Mark 1.000000\nCMD Mark2 1.000000\nCMD Mark3 1.000000\nCMD Speed 30.000000\n"
+            "=== CYCLE 3\n\nCMD Heading 350.000000\nCMD Speed 10.000000\n");
+}
+
+TEST(BrianRun, TraceHasEveryKindOfLine) {
+  const ToolRun r = run_tool("--profile legacy --trace " + kData + "/synth/BrianConfigs.ini " + kData + "/synth/input.txt");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  for (const char* kind : {"\nCRISP ", "\nFUZZY ", "\nPRED ", "\nCANDO ", "\nWANT ", "\nRULE ", "\nPACT ", "\nACT ", "\nCMD "})
+    EXPECT_NE(r.out.find(kind), std::string::npos) << kind;
+}
+
+TEST(BrianRun, BadInputNamesFileAndLine) {
+  const fs::path bad = fs::temp_directory_path() / ("brian_bad_input_" + std::to_string(::getpid()) + ".txt");
+  std::ofstream(bad) << "x 25\ny 0\n---\nx twenty\n";
+  const ToolRun r = run_tool(kData + "/synth " + bad.string());
+  fs::remove(bad);
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find(bad.string() + ":4:"), std::string::npos) << r.err;
+}
+
+TEST(BrianRun, BadConfigurationAndUsage) {
+  EXPECT_EQ(run_tool(kData + "/nonexistent " + kData + "/synth/input.txt").rc, 2);
+  EXPECT_EQ(run_tool("--profile nope " + kData + "/synth " + kData + "/synth/input.txt").rc, 2);
+  EXPECT_EQ(run_tool(kData + "/synth").rc, 2);
+}
