@@ -7,8 +7,12 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include <csignal>
 #include <cmath>
-#include <mutex>
+#include <string>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 #include "mrt_common/pose2d.h"
@@ -16,6 +20,32 @@
 using mrt::common::Pose2D;
 
 namespace {
+
+// The emulator as a child process of the test (reconnect.test): started with
+// fork/exec on the node's port path, always stopped by the destructor.
+class EmulatorProcess {
+ public:
+  ~EmulatorProcess() { stop(); }
+  void start(const std::string& link) {
+    stop();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive a crashed test
+      ::execl(AIRBOARD_EMULATOR, AIRBOARD_EMULATOR, "--link", link.c_str(), "--motors", "2", "--cpr", "8192",
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+  }
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
 
 struct Sample {
   double t;
@@ -33,13 +63,19 @@ class Airboard : public ::testing::Test {
     pnh_.param("vx", vx_, 0.3);
     pnh_.param("vy", vy_, 0.0);
     pnh_.param("omega", omega_, 0.5);
+    if (pnh_.getParam("start_emulator", emu_link_)) emu_.start(emu_link_);
     // Wait for the node to be connected to the emulator.
-    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(20.0);
-    while (ros::ok() && ros::WallTime::now() < end && !connected_) {
+    ASSERT_TRUE(wait_for([&] { return connected_; }, 20.0)) << "airboard_node never connected to the emulator";
+  }
+
+  template <typename Pred>
+  bool wait_for(Pred pred, double seconds) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::ok() && ros::WallTime::now() < end && !pred()) {
       ros::spinOnce();
       ros::WallDuration(0.01).sleep();
     }
-    ASSERT_TRUE(connected_) << "airboard_node never connected to the emulator";
+    return pred();
   }
 
   // Publishes the twist at 50 Hz for `seconds` of wall time.
@@ -68,6 +104,8 @@ class Airboard : public ::testing::Test {
   }
   void on_wheels(const mrt_msgs::WheelState& w) { wheels_.push_back(w); }
 
+  EmulatorProcess emu_;
+  std::string emu_link_;
   ros::NodeHandle nh_, pnh_{"~"};
   ros::Publisher cmd_pub_;
   ros::Subscriber odom_sub_, status_sub_, wheel_sub_;
@@ -221,6 +259,39 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
               last.watchdog_trips, dist);
   EXPECT_GT(on_target, zero);
   EXPECT_GT(dist, 0.3);
+}
+
+// The board disappears (the emulator process exits: the pty hangs up) and
+// comes back: the node reports the link down with stopped wheels, then
+// reconnects with back-off and drives again.
+TEST_F(Airboard, ReconnectsWhenThePortComesBack) {
+  drive(1.0, vx_, vy_, omega_);
+  status_.clear();
+  wheels_.clear();
+  emu_.stop();
+  ASSERT_TRUE(wait_for([&] { return !status_.empty() && !status_.back().connected; }, 5.0))
+      << "the node did not notice the port going away";
+  bool stopped = false;
+  for (const auto& w : wheels_) {
+    bool zero = !w.speed.empty();
+    for (double v : w.speed) zero = zero && v == 0.0;
+    stopped = stopped || zero;
+  }
+  EXPECT_TRUE(stopped) << "no stopped wheel_state after the link was lost";
+  drive(1.0, vx_, vy_, omega_);  // commands while the board is away
+  status_.clear();
+  emu_.start(emu_link_);
+  ASSERT_TRUE(wait_for([&] { return !status_.empty() && status_.back().connected && status_.back().board_time > 0; },
+                       15.0))
+      << "the node did not reconnect";
+  EXPECT_GE(status_.back().reconnects, 1u);
+  EXPECT_LT(status_.back().board_time, 5.0);  // a fresh board
+  wheels_.clear();
+  drive(1.0, vx_, vy_, omega_);
+  bool moving = false;
+  for (const auto& w : wheels_)
+    for (double v : w.speed) moving = moving || std::fabs(v) > 1.0;
+  EXPECT_TRUE(moving) << "the wheels did not move after reconnection";
 }
 
 }  // namespace

@@ -58,3 +58,41 @@ TEST(PtyEmulator, ServesTheProtocolOnAPseudoTerminal) {
   emu.reset();
   EXPECT_NE(::access(link.c_str(), F_OK), 0);  // the symlink is gone
 }
+
+TEST(SerialPort, ReportsTheDeviceGoingAway) {
+  const std::string link = "/tmp/mrt_airboard_gtest_hup_" + std::to_string(::getpid());
+  auto emu = std::make_unique<PtyEmulator>(FirmwareConfig{}, LineFaults{}, link);
+  SerialPort port;
+  port.open(link, 115200);
+  uint8_t buf[64];
+  EXPECT_EQ(port.read(buf, sizeof(buf)), 0u);
+  emu.reset();  // the emulator exits: the pty master closes
+  EXPECT_THROW(
+      {
+        for (int i = 0; i < 100; ++i) {
+          port.wait_readable(10);
+          port.read(buf, sizeof(buf));
+        }
+      },
+      SerialError);
+  EXPECT_FALSE(port.is_open());
+  EXPECT_THROW(port.open(link, 115200), SerialError);  // the link is gone too
+  EXPECT_THROW(port.open("/dev/null", 115200), SerialError);  // not a tty
+  EXPECT_THROW(port.open(link, 12345), SerialError);          // bad baud rate
+}
+
+TEST(Backoff, DoublesUpToTheMaximumAndResets) {
+  Backoff b(0.1, 1.0);
+  EXPECT_TRUE(b.due(0.0));
+  b.failed(0.0);
+  EXPECT_FALSE(b.due(0.05));
+  EXPECT_TRUE(b.due(0.1));
+  b.failed(0.1);  // next after 0.2
+  EXPECT_FALSE(b.due(0.25));
+  EXPECT_TRUE(b.due(0.31));
+  for (int i = 0; i < 10; ++i) b.failed(1.0);
+  EXPECT_DOUBLE_EQ(b.current_delay(), 1.0);
+  b.succeeded();
+  EXPECT_DOUBLE_EQ(b.current_delay(), 0.1);
+  EXPECT_TRUE(b.due(0.0));
+}
