@@ -20,7 +20,18 @@ void set_proposal(TokenStream& ts, const Token& t, ExprAst& e) {
 
 }  // namespace
 
+namespace {
+constexpr int kMaxDepth = 256;  // deeper nesting would only exhaust the stack
+int depth = 0;
+struct DepthGuard {
+  DepthGuard() { ++depth; }
+  ~DepthGuard() { --depth; }
+};
+}  // namespace
+
 ExprAst parse_expression(TokenStream& ts) {
+  DepthGuard guard;
+  if (depth > kMaxDepth) ts.fail(ts.peek(), "expression nested deeper than " + std::to_string(kMaxDepth) + " levels");
   const Token& open = ts.expect(Token::kOpen, "'(' opening an expression");
   ExprAst e;
   e.line = open.line;
