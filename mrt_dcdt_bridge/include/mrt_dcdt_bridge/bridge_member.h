@@ -1,0 +1,50 @@
+// The bridge's DCDT side (ROS-free): a message-driven Member that receives
+// the mapped DCDT types, decodes their XML payloads and hands them to a
+// callback (the ROS node publishes them), and shares messages coming from
+// ROS. Counts traffic per type, parse errors and drops for diagnostics.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+
+#include "mrt_dcdt_bridge/bridge_mapping.h"
+#include "mrt_dcdt_bridge/member.h"
+#include "mrt_dcdt_bridge/xml_message.h"
+
+namespace mrt::dcdt {
+
+struct BridgeStats {
+  std::map<int, uint64_t> in;   ///< DCDT -> ROS, per type
+  std::map<int, uint64_t> out;  ///< ROS -> DCDT, per type
+  uint64_t parse_errors = 0;
+  uint64_t dropped = 0;
+  std::string last_error;
+};
+
+class BridgeMember : public Member {
+ public:
+  /// xml is null for PayloadKind::RAW.
+  using Deliver = std::function<void(const TopicMapping& m, const Msg& msg, const XmlMessage* xml)>;
+
+  BridgeMember(Agora* agora, BridgeMapping mapping, Deliver deliver);
+  void Init() override;
+  void DoYourJob(int pending) override;
+
+  /// ROS -> DCDT: shares payload as message type m.type (thread-safe).
+  void Share(const TopicMapping& m, const std::string& payload);
+  /// Records a message that could not be converted (counted, not shared).
+  void CountError(const std::string& what, bool parse_error);
+
+  BridgeStats Stats();
+  const BridgeMapping& mapping() const { return mapping_; }
+
+ private:
+  BridgeMapping mapping_;
+  Deliver deliver_;
+  std::mutex mutex_;
+  BridgeStats stats_;
+};
+
+}  // namespace mrt::dcdt

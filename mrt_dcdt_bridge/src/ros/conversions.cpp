@@ -1,0 +1,101 @@
+#include "ros/conversions.h"
+
+namespace mrt::dcdt::ros_conv {
+
+namespace {
+void StampTo(const std_msgs::Header& h, XmlMessage* x) {
+  x->sec = h.stamp.sec;
+  x->nsec = h.stamp.nsec;
+  x->frame = h.frame_id;
+}
+void StampFrom(const XmlMessage& x, std_msgs::Header* h) {
+  h->stamp.sec = static_cast<uint32_t>(x.sec);
+  h->stamp.nsec = x.nsec;
+  h->frame_id = x.frame;
+}
+const XmlAttribute& ValueOf(const XmlObject& o, const char* cls) {
+  if (o.membership_class != cls || o.attributes.size() != 1 || o.attributes[0].name != "value" ||
+      !o.attributes[0].symbol.empty())
+    throw XmlError(0, "object '" + o.name + "' is not a " + cls + " (class " + cls +
+                          ", one numeric attribute 'value')");
+  return o.attributes[0];
+}
+}  // namespace
+
+XmlMessage FromPercept(const mrt_msgs::Percept& p) {
+  XmlMessage x;
+  StampTo(p.header, &x);
+  x.sensor = p.sensor;
+  x.robot = p.robot;
+  for (const auto& o : p.objects) {
+    XmlObject xo{o.name, o.membership_class, {}};
+    for (const auto& a : o.attributes) xo.attributes.push_back({a.name, a.value, a.symbol, a.variability, a.reliability});
+    x.objects.push_back(std::move(xo));
+  }
+  return x;
+}
+
+mrt_msgs::Percept ToPercept(const XmlMessage& x) {
+  mrt_msgs::Percept p;
+  StampFrom(x, &p.header);
+  p.sensor = x.sensor;
+  p.robot = x.robot;
+  for (const auto& o : x.objects) {
+    mrt_msgs::PerceptObject po;
+    po.name = o.name;
+    po.membership_class = o.membership_class;
+    for (const auto& a : o.attributes) {
+      mrt_msgs::Attribute at;
+      at.name = a.name;
+      at.value = a.value;
+      at.symbol = a.symbol;
+      at.variability = a.variability;
+      at.reliability = a.reliability;
+      po.attributes.push_back(at);
+    }
+    p.objects.push_back(po);
+  }
+  return p;
+}
+
+XmlMessage FromCrispData(const mrt_msgs::CrispDataArray& c) {
+  XmlMessage x;
+  StampTo(c.header, &x);
+  for (const auto& d : c.data) x.objects.push_back({d.name, "CrispData", {{"value", d.value, "", 0.0, d.reliability}}});
+  return x;
+}
+
+mrt_msgs::CrispDataArray ToCrispData(const XmlMessage& x) {
+  mrt_msgs::CrispDataArray c;
+  StampFrom(x, &c.header);
+  for (const auto& o : x.objects) {
+    const auto& a = ValueOf(o, "CrispData");
+    mrt_msgs::CrispData d;
+    d.name = o.name;
+    d.value = a.value;
+    d.reliability = a.reliability;
+    c.data.push_back(d);
+  }
+  return c;
+}
+
+XmlMessage FromCommands(const mrt_msgs::CommandArray& c) {
+  XmlMessage x;
+  StampTo(c.header, &x);
+  for (const auto& d : c.commands) x.objects.push_back({d.name, "Command", {{"value", d.value, "", 0.0, 1.0}}});
+  return x;
+}
+
+mrt_msgs::CommandArray ToCommands(const XmlMessage& x) {
+  mrt_msgs::CommandArray c;
+  StampFrom(x, &c.header);
+  for (const auto& o : x.objects) {
+    mrt_msgs::Command d;
+    d.name = o.name;
+    d.value = ValueOf(o, "Command").value;
+    c.commands.push_back(d);
+  }
+  return c;
+}
+
+}  // namespace mrt::dcdt::ros_conv

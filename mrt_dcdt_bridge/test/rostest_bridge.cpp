@@ -1,0 +1,188 @@
+// rostest: legacy Agora -> bridge -> ROS with every field intact; ROS ->
+// bridge -> legacy Agora; no echo; diagnostics.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <mrt_msgs/Percept.h>
+
+#include <atomic>
+#include <mutex>
+
+#include "mrt_dcdt_bridge/xml_message.h"
+#include "process.h"
+
+using namespace mrt::dcdt;
+
+namespace {
+
+std::string g_inner_dir;
+
+bool SpinUntil(const std::function<bool()>& pred, double timeout_s) {
+  ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout_s);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    if (pred()) return true;
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  return pred();
+}
+
+TEST(Bridge, LegacyPerceptsArriveAsRosMessagesWithEveryField) {
+  ros::NodeHandle nh;
+  std::mutex m;
+  std::vector<mrt_msgs::Percept> got;
+  auto sub = nh.subscribe<mrt_msgs::Percept>("vision/percepts", 10, [&](const mrt_msgs::Percept::ConstPtr& p) {
+    std::lock_guard<std::mutex> l(m);
+    got.push_back(*p);
+  });
+  ASSERT_TRUE(SpinUntil([&] { std::lock_guard<std::mutex> l(m); return !got.empty(); }, 20.0));
+  const XmlMessage x = DecodeXml(dcdt_test::Slurp(DCDT_TEST_DATA "/percept_ball.xml"));
+  std::lock_guard<std::mutex> l(m);
+  const auto& p = got.front();
+  EXPECT_EQ(p.header.stamp.sec, 1700000000u);
+  EXPECT_EQ(p.header.stamp.nsec, 250000000u);
+  EXPECT_EQ(p.header.frame_id, "base_link");
+  EXPECT_EQ(p.sensor, "omnivision");
+  EXPECT_EQ(p.robot, "ianus3");
+  ASSERT_EQ(p.objects.size(), x.objects.size());
+  for (size_t i = 0; i < x.objects.size(); ++i) {
+    EXPECT_EQ(p.objects[i].name, x.objects[i].name);
+    EXPECT_EQ(p.objects[i].membership_class, x.objects[i].membership_class);
+    ASSERT_EQ(p.objects[i].attributes.size(), x.objects[i].attributes.size());
+    for (size_t j = 0; j < x.objects[i].attributes.size(); ++j) {
+      const auto& a = p.objects[i].attributes[j];
+      const auto& b = x.objects[i].attributes[j];
+      EXPECT_EQ(a.name, b.name);
+      EXPECT_EQ(a.value, b.value);
+      EXPECT_EQ(a.symbol, b.symbol);
+      EXPECT_EQ(a.variability, b.variability);
+      EXPECT_EQ(a.reliability, b.reliability);
+    }
+  }
+  EXPECT_EQ(p.objects[0].attributes[0].value, 2.4);
+  EXPECT_EQ(p.objects[0].attributes[2].symbol, "orange");
+}
+
+mrt_msgs::Percept SamplePercept() {
+  mrt_msgs::Percept p;
+  p.header.stamp = ros::Time(1234, 567890123);
+  p.header.frame_id = "robot1/base_link";
+  p.sensor = "sonar";
+  p.robot = "roby";
+  mrt_msgs::PerceptObject o;
+  o.name = "wall<1>";
+  o.membership_class = "Wall";
+  mrt_msgs::Attribute a;
+  a.name = "distance";
+  a.value = 0.1 + 0.2;
+  a.variability = 0.05;
+  a.reliability = 0.75;
+  o.attributes.push_back(a);
+  a.name = "side";
+  a.value = 0;
+  a.symbol = "left & front";
+  o.attributes.push_back(a);
+  p.objects.push_back(o);
+  return p;
+}
+
+std::string Unescape(const std::string& s) {
+  std::string o;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\' && i + 1 < s.size()) {
+      o += s[i + 1] == 'n' ? '\n' : s[i + 1];
+      ++i;
+    } else {
+      o += s[i];
+    }
+  }
+  return o;
+}
+
+TEST(Bridge, RosPerceptReachesTheLegacyAgora) {
+  const std::string out = g_inner_dir + "_motion.txt";
+  dcdt_test::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_TO_MOTION", "--expect", "1",
+                             "--duration", "30", "--out", out});
+  ASSERT_TRUE(SpinUntil([&] { return dcdt_test::Slurp(out).find("ready") != std::string::npos; }, 10.0));
+  ros::NodeHandle nh;
+  auto pub = nh.advertise<mrt_msgs::Percept>("motion/percepts", 10);
+  const auto sent = SamplePercept();
+  ASSERT_TRUE(SpinUntil(
+      [&] {
+        pub.publish(sent);
+        ros::WallDuration(0.1).sleep();
+        return !dcdt_test::Lines(out, "recv ").empty();
+      },
+      20.0));
+  auto line = dcdt_test::Lines(out, "recv ")[0];
+  EXPECT_EQ(dcdt_test::Field(line, "type"), "32");
+  EXPECT_EQ(dcdt_test::Field(line, "warranty"), "2");
+  const XmlMessage x = DecodeXml(Unescape(dcdt_test::Field(line, "payload")));
+  EXPECT_EQ(x.sec, 1234);
+  EXPECT_EQ(x.nsec, 567890123u);
+  EXPECT_EQ(x.frame, "robot1/base_link");
+  EXPECT_EQ(x.sensor, "sonar");
+  EXPECT_EQ(x.robot, "roby");
+  ASSERT_EQ(x.objects.size(), 1u);
+  EXPECT_EQ(x.objects[0].name, "wall<1>");
+  EXPECT_EQ(x.objects[0].membership_class, "Wall");
+  ASSERT_EQ(x.objects[0].attributes.size(), 2u);
+  EXPECT_EQ(x.objects[0].attributes[0].value, 0.1 + 0.2);
+  EXPECT_EQ(x.objects[0].attributes[0].variability, 0.05);
+  EXPECT_EQ(x.objects[0].attributes[0].reliability, 0.75);
+  EXPECT_EQ(x.objects[0].attributes[1].symbol, "left & front");
+  EXPECT_EQ(legacy.Wait(10000), 0);
+}
+
+TEST(Bridge, NoEchoOnATopicMappedBothWays) {
+  ros::NodeHandle nh;
+  std::atomic<int> seen{0};
+  auto sub = nh.subscribe<mrt_msgs::Percept>("map/percepts", 10, [&](const mrt_msgs::Percept::ConstPtr&) { ++seen; });
+  auto pub = nh.advertise<mrt_msgs::Percept>("map/percepts", 10);
+  // Wait until the bridge is connected to our publisher.
+  ASSERT_TRUE(SpinUntil([&] { return pub.getNumSubscribers() >= 2 && sub.getNumPublishers() >= 2; }, 10.0));
+  for (int i = 0; i < 3; ++i) pub.publish(SamplePercept());
+  SpinUntil([] { return false; }, 1.5);
+  EXPECT_EQ(seen.load(), 3);  // ours only: the bridge did not send them back
+}
+
+TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
+  ros::NodeHandle nh;
+  std::mutex m;
+  diagnostic_msgs::DiagnosticStatus last;
+  bool have = false;
+  auto sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
+        for (const auto& s : a->status) {
+          if (s.name.find("DCDT Agora") == std::string::npos) continue;
+          std::lock_guard<std::mutex> l(m);
+          last = s;
+          have = true;
+        }
+      });
+  auto value = [&](const std::string& k) {
+    for (const auto& kv : last.values)
+      if (kv.key == k) return kv.value;
+    return std::string();
+  };
+  ASSERT_TRUE(SpinUntil(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return have && !value("in.18").empty() && value("inner_peers") != "0";
+      },
+      10.0));
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_EQ(value("parse_errors"), "0");
+  EXPECT_GT(std::stoi(value("in.18")), 0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "dcdt_bridge_test");
+  ros::NodeHandle pnh("~");
+  pnh.param<std::string>("inner_dir", g_inner_dir, "/tmp/dcdt_rostest");
+  ros::AsyncSpinner spinner(1);
+  return RUN_ALL_TESTS();
+}

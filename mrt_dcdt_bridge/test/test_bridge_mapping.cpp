@@ -1,0 +1,54 @@
+// The bridge mapping file: the shipped examples parse; errors name file:line:col.
+#include <gtest/gtest.h>
+
+#include "mrt_common/parse_error.h"
+#include "mrt_dcdt_bridge/bridge_mapping.h"
+
+using namespace mrt::dcdt;
+using mrt::common::ParseError;
+
+namespace {
+
+TEST(BridgeMapping, TestMappingParses) {
+  auto m = LoadBridgeMapping(std::string(DCDT_TEST_DATA) + "/bridge_mapping.yaml");
+  ASSERT_EQ(m.to_ros.size(), 3u);
+  EXPECT_EQ(m.to_ros[0].type, MSG_FROM_VISION);
+  EXPECT_EQ(m.to_ros[0].topic, "vision/percepts");
+  EXPECT_EQ(m.to_ros[0].kind, PayloadKind::PERCEPT);
+  EXPECT_EQ(m.to_ros[0].scope, DCDT_ALL_MSG);
+  EXPECT_EQ(m.to_ros[1].kind, PayloadKind::COMMANDS);
+  ASSERT_EQ(m.to_dcdt.size(), 2u);
+  EXPECT_EQ(m.to_dcdt[0].type, MSG_TO_MOTION);
+  EXPECT_EQ(m.to_dcdt[0].warranty, DCDT_DW_GUARANTEED);
+}
+
+TEST(BridgeMapping, Errors) {
+  struct Case {
+    const char* text;
+    int line;
+    const char* expect;
+  } cases[] = {
+      {"to_ros:\n  - {type: MSG_FROM_NOTHING, topic: a}\n", 2, "unknown DCDT message type"},
+      {"to_ros:\n  - type: 18\n    kind: percept\n", 2, "missing 'topic'"},
+      {"to_ros:\n  - {type: 18, topic: a, kind: jpeg}\n", 2, "kind must be"},
+      {"to_ros:\n  - {type: 18, topic: a, scope: near}\n", 2, "scope must be"},
+      {"to_dcdt:\n  - {type: 18, topic: a, warranty: maybe}\n", 2, "warranty must be"},
+      {"to_ros:\n  - {type: 18, topic: a}\n  - {type: 18, topic: b}\n", 3, "mapped twice"},
+      {"to_ros:\n  - {type: 18, topic: a, colour: red}\n", 2, "unknown key 'colour'"},
+      {"from_ros: []\n", 1, "unknown key 'from_ros'"},
+      {"to_ros: [\n", 2, ""},
+      {"to_ros: []\n", 1, "nothing mapped"},
+  };
+  for (const auto& c : cases) {
+    try {
+      ParseBridgeMapping(c.text, "map.yaml");
+      ADD_FAILURE() << "accepted: " << c.text;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.file(), "map.yaml");
+      EXPECT_EQ(e.line(), c.line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
