@@ -249,7 +249,15 @@ class AirboardNode {
     last_control_ = now;
     if (fresh && source_ == Source::kWheelPwm) {
       std::vector<double> d = wheel_cmd_;
-      for (double& x : d) x = std::max(-1.0, std::min(1.0, x));
+      bool clamped = false;
+      for (double& x : d) {
+        clamped = clamped || std::fabs(x) > 1.0;
+        x = std::max(-1.0, std::min(1.0, x));
+      }
+      if (clamped) {
+        ++commands_saturated_;
+        ROS_WARN_THROTTLE(5.0, "airboard_node: wheel_cmd duty beyond +-1 clamped");
+      }
       limiter_.reset();
       send(make_set_pwm(seq_++, d));
       ++commands_sent_;

@@ -3,6 +3,8 @@
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/AirboardStatus.h>
+#include <mrt_msgs/CommandArray.h>
+#include <mrt_msgs/WheelCommand.h>
 #include <mrt_msgs/WheelState.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -259,6 +261,42 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
               last.watchdog_trips, dist);
   EXPECT_GT(on_target, zero);
   EXPECT_GT(dist, 0.3);
+}
+
+// Mr. BRIAN commands go through the configured mapping (Triskar: polar,
+// SpeedModule 20 cm/s towards SpeedAngle 90 deg = 0.2 m/s to the left), and
+// wheel_cmd set-points reach the board unchanged.
+TEST_F(Airboard, BrianAndWheelCommandsReachTheBoard) {
+  ros::Publisher brian = nh_.advertise<mrt_msgs::CommandArray>("brian_commands", 10);
+  ros::Publisher wheel = nh_.advertise<mrt_msgs::WheelCommand>("wheel_cmd", 10);
+  auto last_setpoints_near = [&](const std::vector<double>& want) {
+    if (wheels_.empty() || wheels_.back().setpoint.size() != want.size()) return false;
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (std::fabs(wheels_.back().setpoint[i] - want[i]) > 2e-3) return false;
+    return true;
+  };
+  // Hand-computed: w_i = cos(a_i) * 0.2 / 0.04 for a = 90, 210, 330 deg.
+  const std::vector<double> want_brian{0.0, -4.330127, 4.330127};
+  mrt_msgs::CommandArray c;
+  for (auto [n, v] : {std::pair<const char*, double>{"SpeedModule", 20.0}, {"SpeedAngle", 90.0}, {"Rotation", 0.0}}) {
+    mrt_msgs::Command x;
+    x.name = n;
+    x.value = v;
+    c.commands.push_back(x);
+  }
+  EXPECT_TRUE(wait_for([&] {
+    brian.publish(c);
+    ros::WallDuration(0.01).sleep();
+    return last_setpoints_near(want_brian);
+  }, 10.0)) << "Brian commands did not reach the board";
+  mrt_msgs::WheelCommand w;
+  w.mode = mrt_msgs::WheelCommand::MODE_SPEED;
+  w.speed = {1.0, -2.0, 3.0};
+  EXPECT_TRUE(wait_for([&] {
+    wheel.publish(w);
+    ros::WallDuration(0.01).sleep();
+    return last_setpoints_near(w.speed);
+  }, 10.0)) << "wheel_cmd set-points did not reach the board";
 }
 
 // The board disappears (the emulator process exits: the pty hangs up) and
