@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "mrt_brian/behavior_engine.h"
 #include "mrt_brian/brian.h"
 #include "mrt_common/parse_error.h"
 
@@ -126,4 +127,49 @@ TEST(Modules, ManualListFileWithEightFilesAndErrors) {
     EXPECT_EQ(e.line(), 1);
     EXPECT_NE(e.file().find("brake.rul"), std::string::npos);
   }
+}
+
+namespace {
+// A behaviour that is not a rule base: always proposes one action.
+class ConstantBehavior : public Behavior {
+ public:
+  ConstantBehavior(std::string name, int level, int action, int label, double value)
+      : Behavior(std::move(name), level), action_(action), label_(label), value_(value) {}
+  void run(BehaviorContext& ctx) const override { ctx.propose(action_, label_, value_, 1.0); }
+
+ private:
+  int action_, label_;
+  double value_;
+};
+
+struct LevelLog : HierarchyObserver {
+  std::vector<int> levels;
+  void before_level(int level) override { levels.push_back(level); }
+};
+}  // namespace
+
+TEST(Modules, CustomBehaviorPlugsIntoTheEngine) {
+  BehaviorEngine e;
+  e.add(std::make_unique<ConstantBehavior>("Low", 1, 0, 0, 0.7));
+  e.add(std::make_unique<ConstantBehavior>("High", 2, 0, 1, 0.9));
+  e.add(std::make_unique<ConstantBehavior>("Top", 3, 0, 2, 0.2));
+  e.finalize(Profile::kManual);
+  ExpressionPool pool;
+  EvalState s;
+  ProposalList proposals;
+  BehaviorContext ctx;
+  ctx.pool = &pool;
+  ctx.state = &s;
+  ctx.proposals = &proposals;
+  std::vector<std::uint8_t> active;
+  LevelLog log;
+  // CANDO: Low 0.8 and Top 0.5 pass the default 0.49 threshold, High 0.3 does not.
+  e.run({{0.8, 1.0}, {0.3, 1.0}, {0.5, 1.0}}, ctx, &log, active);
+  ASSERT_EQ(proposals.size(), 2u);
+  EXPECT_EQ(proposals[0].owner, 0);
+  EXPECT_DOUBLE_EQ(proposals[0].value, 0.7);
+  EXPECT_EQ(proposals[1].owner, 2);
+  EXPECT_EQ(proposals[1].level, 3);
+  EXPECT_EQ(log.levels, (std::vector<int>{2, 3}));
+  EXPECT_EQ(active, (std::vector<std::uint8_t>{1, 0, 1}));
 }
