@@ -3,6 +3,7 @@
 
 #include "mrt_common/parse_error.h"
 #include "mrt_dcdt_bridge/bridge_mapping.h"
+#include "mrt_dcdt_bridge/config.h"
 
 using namespace mrt::dcdt;
 using mrt::common::ParseError;
@@ -49,6 +50,18 @@ TEST(BridgeMapping, Errors) {
       EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
     }
   }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(BridgeMapping, ShippedApplicationConfigurationParses) {
+  auto m = LoadBridgeMapping(std::string(DCDT_CONFIG_DIR) + "/bridge_mapping.yaml");
+  EXPECT_FALSE(m.to_ros.empty());
+  EXPECT_FALSE(m.to_dcdt.empty());
+  auto c = LoadAgoraConfig(std::string(DCDT_CONFIG_DIR) + "/agora.cfg");
+  EXPECT_EQ(c.local_addr, "127.0.0.1");
 }
 
 }  // namespace
