@@ -2,10 +2,10 @@
 """Counts test cases in the JUnit XML files catkin writes (gtest, rostest).
 
 rostest writes two files per test: the test node's own gtest XML
-(rosunit-*.xml) and a launch-level summary (rostest-*.xml) that repeats the
-same cases; the summary is used only when the test node left no XML (it
-crashed or never started), so every case is counted once and a crash counts
-as a failure. Prints the per-file table, then "N passed, M failed" as the
+(rosunit-<name>.xml) and a launch-level summary (rostest-test_<name>.xml)
+that repeats the outcome; the summary counts only when the test node left no
+XML (it crashed or never started) or when it failed while the node's cases
+all passed, so every case is counted once and a crash counts as a failure. Prints the per-file table, then "N passed, M failed" as the
 last line; exits 1 if anything failed or nothing ran.
 """
 import os
@@ -33,17 +33,21 @@ def cases(path):
 def main(results_dir):
     passed = failed = 0
     for pkg in sorted(os.listdir(results_dir)) if os.path.isdir(results_dir) else []:
-        files = sorted(f for f in os.listdir(os.path.join(results_dir, pkg)) if f.endswith(".xml"))
-        unit = {f for f in files if not f.startswith("rostest-")}
+        pdir = os.path.join(results_dir, pkg)
+        files = sorted(f for f in os.listdir(pdir) if f.endswith(".xml"))
         for f in files:
+            p, fl = cases(os.path.join(pdir, f))
             if f.startswith("rostest-"):
-                # rostest-test_<name>.xml summarises rosunit-<name>.xml
+                # rostest-test_<name>.xml summarises rosunit-<name>.xml: count
+                # it only when the test node left no result of its own, or as
+                # one extra failure when it failed beyond the node's cases.
                 name = f[len("rostest-"):-len(".xml")]
-                if name.startswith("test_"):
-                    name = name[len("test_"):]
-                if any(u.startswith("rosunit-") and name in u for u in unit):
-                    continue
-            p, fl = cases(os.path.join(results_dir, pkg, f))
+                name = name[len("test_"):] if name.startswith("test_") else name
+                unit = f"rosunit-{name}.xml"
+                if unit in files:
+                    if fl == 0 or cases(os.path.join(pdir, unit))[1] > 0:
+                        continue
+                    p, fl = 0, 1
             print(f"  {pkg}/{f}: {p} passed, {fl} failed")
             passed += p
             failed += fl
