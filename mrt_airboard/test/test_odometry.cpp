@@ -52,3 +52,19 @@ TEST(EncoderOdometry, StraightLineAndReset) {
   EXPECT_EQ(odo.twist().vx, 0.0);
   EXPECT_THROW(odo.update({1, 2, 3}, 3.0), std::invalid_argument);
 }
+
+TEST(EncoderOdometry, TwistIsMeasuredOverAWindow) {
+  BaseParams p = base_preset("ianus3");  // 8192 counts per revolution
+  EncoderOdometry odo(p, 0.01);
+  const std::vector<double> w{5.0, 5.0};  // 0.25 m/s, ~6.5 counts per ms
+  double worst = 0.0;
+  for (int i = 0; i <= 1000; ++i) {
+    std::vector<int64_t> c;
+    for (double v : w) c.push_back(static_cast<int64_t>(std::floor(v * i * 1e-3 * 8192 / (2 * M_PI))));
+    odo.update(c, i * 1e-3);
+    if (i > 20) worst = std::max(worst, std::fabs(odo.twist().vx - 0.25));
+  }
+  // One count in a 10 ms window: 2 pi 0.05 / 8192 / 0.01 = 3.8 mm/s.
+  EXPECT_LT(worst, 0.004);
+  EXPECT_NEAR(odo.pose().x, 0.25, 1e-4);
+}

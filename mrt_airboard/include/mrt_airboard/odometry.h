@@ -15,7 +15,9 @@ namespace mrt::airboard {
 /// constant command yields an exact circle whatever the update rate.
 class EncoderOdometry {
  public:
-  EncoderOdometry(const BaseParams& p);
+  /// `twist_window`: the twist is measured over at least this long (s), so
+  /// encoder quantisation does not make it noisy when updates are close.
+  explicit EncoderOdometry(const BaseParams& p, double twist_window = 0.01);
 
   /// Feeds cumulative counts (wrap-free) taken at `time` (s). The first call
   /// (and the first after reset()) only sets the reference.
@@ -25,7 +27,7 @@ class EncoderOdometry {
   void reset();
 
   const mrt::common::Pose2D& pose() const { return pose_; }
-  /// Body twist over the last update interval (m/s, rad/s).
+  /// Body twist over the last twist window (m/s, rad/s).
   const Twist2D& twist() const { return twist_; }
   void set_pose(const mrt::common::Pose2D& p) { pose_ = p; }
 
@@ -35,6 +37,9 @@ class EncoderOdometry {
   bool have_ref_ = false;
   std::vector<int64_t> ref_;
   double ref_time_ = 0.0;
+  double twist_window_;
+  std::vector<int64_t> twist_ref_;
+  double twist_ref_time_ = 0.0;
   mrt::common::Pose2D pose_;
   Twist2D twist_;
 };
