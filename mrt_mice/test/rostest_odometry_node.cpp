@@ -1,0 +1,98 @@
+// rostest of mice_odometry_node fed by hand: 10 samples turning 0.03 rad in
+// place, 10 samples of 1 cm straight ahead (manual placement, D = 0.2 m,
+// 10000 counts/m), one inconsistent sample and one malformed one.
+#include <cmath>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <gtest/gtest.h>
+#include <mrt_msgs/MiceErrorStats.h>
+#include <mrt_msgs/MiceReading.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+
+namespace {
+
+template <class Pred>
+bool wait_for(Pred p, double s) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(s);
+  while (ros::WallTime::now() < end) {
+    ros::spinOnce();
+    if (p()) return true;
+    ros::WallDuration(0.005).sleep();
+  }
+  return false;
+}
+
+TEST(MiceOdometryNode, HandComputedReadings) {
+  ros::NodeHandle nh;
+  int n_odom = 0;
+  nav_msgs::Odometry odom;
+  mrt_msgs::MiceErrorStats stats;
+  std::string dropped;
+  auto so = nh.subscribe<nav_msgs::Odometry>("/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& m) {
+    odom = *m;
+    ++n_odom;
+  });
+  auto ss = nh.subscribe<mrt_msgs::MiceErrorStats>(
+      "/mice_errors", 100, [&](const mrt_msgs::MiceErrorStats::ConstPtr& m) { stats = *m; });
+  auto sd = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& d) {
+        for (const auto& s : d->status)
+          for (const auto& kv : s.values)
+            if (kv.key == "dropped (malformed)") dropped = kv.value;
+      });
+  auto pub = nh.advertise<mrt_msgs::MiceReading>("/mice", 100);
+  ASSERT_TRUE(wait_for([&] { return pub.getNumSubscribers() > 0 && so.getNumPublishers() > 0; }, 20.0));
+  ros::WallDuration(0.3).sleep();
+
+  ros::Time t(100.0);
+  auto send = [&](int ldx, int ldy, int rdx, int rdy) {
+    mrt_msgs::MiceReading r;
+    t += ros::Duration(0.02);
+    r.header.stamp = t;
+    r.left.dx = ldx;
+    r.left.dy = ldy;
+    r.right.dx = rdx;
+    r.right.dy = rdy;
+    pub.publish(r);
+  };
+  for (int i = 0; i < 10; ++i) send(0, -30, 0, 30);   // 0.03 rad ccw in place
+  for (int i = 0; i < 10; ++i) send(0, 100, 0, 100);  // 1 cm ahead
+  ASSERT_TRUE(wait_for([&] { return n_odom == 20; }, 10.0)) << n_odom;
+  EXPECT_NEAR(odom.pose.pose.position.x, 0.1 * std::cos(0.3), 1e-9);
+  EXPECT_NEAR(odom.pose.pose.position.y, 0.1 * std::sin(0.3), 1e-9);
+  EXPECT_NEAR(2.0 * std::atan2(odom.pose.pose.orientation.z, odom.pose.pose.orientation.w), 0.3, 1e-9);
+  EXPECT_NEAR(odom.twist.twist.linear.x, 0.5, 1e-6);  // 1 cm in 20 ms
+  EXPECT_EQ(odom.header.frame_id, "odom");
+  EXPECT_EQ(odom.child_frame_id, "base_link");
+  EXPECT_FALSE(stats.flagged);
+  EXPECT_EQ(stats.samples, 20u);
+  EXPECT_NEAR(stats.distance, 0.1, 1e-9);
+  const double var_before = odom.pose.covariance[0];
+  EXPECT_GT(var_before, 0.0);
+
+  send(40, 100, 0, 100);  // x_l != x_r by 4 mm: inconsistent
+  ASSERT_TRUE(wait_for([&] { return n_odom == 21; }, 10.0));
+  EXPECT_TRUE(stats.flagged);
+  EXPECT_NEAR(stats.residual, -0.004, 1e-12);
+  EXPECT_NE(stats.correction, "none");
+  EXPECT_EQ(stats.flagged_samples, 1u);
+  EXPECT_GT(odom.pose.covariance[0], var_before + 1e-4);  // (3 * 4 mm)^2 more
+
+  send(0, 60000, 0, 60000);  // beyond ~max_count: malformed, dropped
+  send(0, 100, 0, 100);
+  ASSERT_TRUE(wait_for([&] { return n_odom == 22; }, 10.0));
+  wait_for([&] { return false; }, 0.3);
+  EXPECT_EQ(n_odom, 22);
+  EXPECT_EQ(stats.samples, 22u);
+  EXPECT_TRUE(wait_for([&] { return dropped == "1"; }, 5.0)) << dropped;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "mice_odometry_node_rostest");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
