@@ -171,21 +171,41 @@ int main() {
     MiceOdometry o(calib.params);
     run_square(2000 + run, run % 2 == 0, mice, {&o}, &slips);
   }
-  // The same slips with the mice side by side as in the manual's Fig. 4.1
-  // (calibrated too): straight runs and turns in place move both mice
+  // The manual's Fig. 4.1 layout: mice side by side 20 cm apart, with the
+  // same kind of systematic errors; UMBmark before and after calibration,
+  // and the same slips. Straight runs and turns in place move both mice
   // across their joining line, where the constraint sees nothing.
+  sim::SimMice side;
+  side.truth.left.mount = Pose2D(0.004, 0.097, deg_to_rad(1.5));
+  side.truth.right.mount = Pose2D(-0.003, -0.104, deg_to_rad(-2.0));
+  side.truth.left.counts_per_m = 15748.0 * 1.012;
+  side.truth.right.counts_per_m = 15748.0 * 0.985;
+  side.noise = mice.noise;
+  MiceParams side_nominal;
+  side_nominal.left.mount = Pose2D(0.0, 0.1, 0.0);
+  side_nominal.right.mount = Pose2D(0.0, -0.1, 0.0);
+  side_nominal.left.counts_per_m = side_nominal.right.counts_per_m = 15748.0;
+  mrt::sim::Simulator side_calib_sim(sim::make_world(side, 98));
+  const CalibrationResult side_calib =
+      calibrate(sim::calibration_runs(side_calib_sim, 10, 5, op), side_nominal);
+  double sb, sa;
+  {
+    MiceOdometry b(side_nominal), a(side_calib.params);
+    std::vector<Pose2D> cwb, ccwb, cwa, ccwa;
+    for (int run = 0; run < 10; ++run) {
+      const bool clockwise = run < 5;
+      const auto e = run_square(1100 + run, clockwise, side, {&a, &b}, nullptr);
+      (clockwise ? cwa : ccwa).push_back(e[0]);
+      (clockwise ? cwb : ccwb).push_back(e[1]);
+    }
+    sb = e_max_syst(cwb, ccwb) * 1000.0;
+    sa = e_max_syst(cwa, ccwa) * 1000.0;
+  }
   Slips side_slips;
   side_slips.rate = 0.05;
-  {
-    sim::SimMice side;
-    side.truth.left.mount = Pose2D(0.0, 0.1, 0.0);
-    side.truth.right.mount = Pose2D(0.0, -0.1, 0.0);
-    side.truth.left.counts_per_m = side.truth.right.counts_per_m = 15748.0;
-    side.noise = mice.noise;
-    for (int run = 0; run < 2; ++run) {
-      MiceOdometry o(side.truth);
-      run_square(2100 + run, run % 2 == 0, side, {&o}, &side_slips);
-    }
+  for (int run = 0; run < 2; ++run) {
+    MiceOdometry o(side_calib.params);
+    run_square(2100 + run, run % 2 == 0, side, {&o}, &side_slips);
   }
   // The simulator's own faults (a mouse loses up to half of single 1 ms
   // steps, most of them smaller than one count).
@@ -223,6 +243,8 @@ int main() {
   std::printf("umbmark_e_max_syst_before_calibration_no_reduction: %.1f mm\n", er);
   std::printf("umbmark_e_max_syst_after_calibration: %.1f mm\n", ea);
   std::printf("umbmark_e_max_syst_published: %.1f mm\n", kPublished);
+  std::printf("umbmark_side_by_side_e_max_syst_before_calibration: %.1f mm\n", sb);
+  std::printf("umbmark_side_by_side_e_max_syst_after_calibration: %.1f mm\n", sa);
   std::printf("umbmark_calibration_ratio: %.4f ratio\n", ea / eb);
   std::printf("umbmark_vs_published_ratio: %.4f ratio\n", ea / kPublished);
   std::printf("calibration_rms_residual: %.2f counts\n", calib.rms_residual);
