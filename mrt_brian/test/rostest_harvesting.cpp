@@ -54,6 +54,21 @@ class Harness {
     return last_;
   }
 
+  // Publishes without waiting for a reply (fixed-rate mode).
+  void send(const std::map<std::string, double>& data) {
+    mrt_msgs::CrispDataArray m;
+    for (const auto& [name, value] : data) {
+      mrt_msgs::CrispData d;
+      d.name = name;
+      d.value = value;
+      d.reliability = 1.0;
+      m.data.push_back(d);
+    }
+    pub_.publish(m);
+  }
+  std::size_t received() const { return received_; }
+  const std::map<std::string, double>& last() const { return last_; }
+
   mrt_msgs::BrianIntrospection intro_;
   bool have_intro_ = false;
 
@@ -136,6 +151,29 @@ TEST(Harvesting, ReloadKeepsTheRuleBaseOnError) {
   EXPECT_TRUE(t.response.success) << t.response.message;
   c = h.cycle(kAutoFarTarget);
   EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+}
+
+// Run by harvesting_rate.test (~rate 20 Hz): one input, a cycle every 50 ms.
+TEST(Harvesting, FixedRate) {
+  Harness h;
+  h.send(kAutoFarTarget);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(5.0);
+  while (h.received() == 0 && ros::WallTime::now() < deadline) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  ASSERT_GT(h.received(), 0u);
+  const std::size_t first = h.received();
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(1.0);
+  while (ros::WallTime::now() < until) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  const std::size_t cycles = h.received() - first;
+  EXPECT_GE(cycles, 12u);  // 20 expected in 1 s; slack for a loaded machine
+  EXPECT_LE(cycles, 25u);
+  ASSERT_EQ(h.last().count("SpeedModule"), 1u);
+  EXPECT_NEAR(h.last().at("SpeedModule"), 75.0, 1e-6);
 }
 
 int main(int argc, char** argv) {
