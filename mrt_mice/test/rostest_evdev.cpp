@@ -112,6 +112,9 @@ TEST(MiceEvdevNode, PublishesCountsAndReconnects) {
   EXPECT_TRUE(wait_for([] { return right_status.find("disconnected") != 0; }, 5.0)) << right_status;
   ::close(rw2);
   ::close(lw);
+  ::unlink(left.c_str());
+  ::unlink(right.c_str());
+  ::rmdir(dir.c_str());
 }
 
 }  // namespace

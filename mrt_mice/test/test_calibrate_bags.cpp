@@ -5,6 +5,7 @@
 #include <ros/time.h>
 #include <rosbag/bag.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -26,7 +27,7 @@ TEST(MiceCalibrateBags, RecoversMiceFromSimulatedBags) {
   m.truth.right.mount = Pose2D(-0.13, 0.05, mrt::common::deg_to_rad(-2.0));
   m.truth.right.counts_per_m = 15500;
   mrt::sim::Simulator s(sim::make_world(m, 4));
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = ::testing::TempDir() + "mrt_mice_" + std::to_string(::getpid()) + "_";
   std::string args;
   sim::settle(s, nullptr);
   for (int k = 0; k < 6; ++k) {

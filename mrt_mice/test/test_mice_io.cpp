@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "mrt_mice/mice_io.h"
 
@@ -100,8 +101,15 @@ TEST(CalibrationCsv, SumsSamplesOfARun) {
   }
 }
 
+// Per-process file names: several test runs may share the machine.
+std::string tmp(const std::string& name) {
+  return ::testing::TempDir() + "mrt_mice_" + std::to_string(::getpid()) + "_" + name;
+}
+
+const std::string kStderr = tmp("stderr");
+
 int run(const std::string& cmd) {
-  const int st = std::system((cmd + " 2>/tmp/mrt_mice_test_stderr").c_str());
+  const int st = std::system((cmd + " 2>" + kStderr).c_str());
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
@@ -113,9 +121,7 @@ std::string slurp(const std::string& path) {
 }
 
 TEST(Tools, MiceOdometryRunsAndReportsBadLines) {
-  const std::string dir = ::testing::TempDir();
-  const std::string params = dir + "mice_params.yaml", in = dir + "mice_in.csv",
-                    out = dir + "mice_out.csv";
+  const std::string params = tmp("params.yaml"), in = tmp("in.csv"), out = tmp("out.csv");
   std::ofstream(params) << kParams;
   {
     // 10 samples of 0.3 rad/10 in place, then 10 of 1 cm straight ahead.
@@ -126,7 +132,7 @@ TEST(Tools, MiceOdometryRunsAndReportsBadLines) {
   }
   const std::string tool = std::string(MRT_MICE_TOOL_DIR) + "/mice_odometry";
   ASSERT_EQ(run(tool + " --params " + params + " --in " + in + " --out " + out), 0)
-      << slurp("/tmp/mrt_mice_test_stderr");
+      << slurp(kStderr);
   std::istringstream res(slurp(out));
   std::string line, last;
   std::getline(res, line);
@@ -142,15 +148,14 @@ TEST(Tools, MiceOdometryRunsAndReportsBadLines) {
 
   std::ofstream(in, std::ios::app) << "0.22,1,x,3,4\n";
   EXPECT_EQ(run(tool + " --params " + params + " --in " + in + " --out " + out), 2);
-  const std::string err = slurp("/tmp/mrt_mice_test_stderr");
+  const std::string err = slurp(kStderr);
   EXPECT_NE(err.find(in + ":13:8:"), std::string::npos) << err;
   EXPECT_EQ(run(tool + " --params /nonexistent.yaml --in " + in + " --out " + out), 2);
   EXPECT_EQ(run(tool + " --in " + in), 2);
 }
 
 TEST(Tools, MiceCalibrateWritesParams) {
-  const std::string dir = ::testing::TempDir();
-  const std::string in = dir + "calib.csv", out = dir + "calib.yaml";
+  const std::string in = tmp("calib.csv"), out = tmp("calib.yaml"), txt = tmp("calib.txt");
   {
     // Manual placement, D = 0.2 m, 10000 counts/m: a 0.5 m push reads 5000
     // counts on y, a 2 pi turn 2 pi * 0.1 m = 6283 counts, opposite signs.
@@ -160,13 +165,13 @@ TEST(Tools, MiceCalibrateWritesParams) {
     for (int i = 10; i < 15; ++i) f << i << ",turn,6.283185307179586,0,-6283,0,6283\n";
   }
   const std::string tool = std::string(MRT_MICE_TOOL_DIR) + "/mice_calibrate";
-  ASSERT_EQ(run(tool + " --in " + in + " --out " + out + " > " + dir + "calib.txt"), 0)
-      << slurp("/tmp/mrt_mice_test_stderr");
+  ASSERT_EQ(run(tool + " --in " + in + " --out " + out + " > " + txt), 0)
+      << slurp(kStderr);
   const MiceParams p = load_params(out);
   EXPECT_NEAR(p.distance(), 0.2, 1e-4);
   EXPECT_NEAR(p.left.counts_per_m, 10000.0, 1e-6);
   EXPECT_NEAR(p.left.mount.theta, -M_PI / 2, 1e-9);
-  EXPECT_NE(slurp(dir + "calib.txt").find("D: 199.9"), std::string::npos) << slurp(dir + "calib.txt");
+  EXPECT_NE(slurp(txt).find("D: 199.9"), std::string::npos) << slurp(txt);
   std::ofstream(in) << "run,kind,amount,left_dx,left_dy,right_dx,right_dy\n1,push,0.5,0,5000,0,5000\n";
   EXPECT_EQ(run(tool + " --in " + in + " --out " + out), 2);  // no turn
 }
