@@ -38,9 +38,9 @@ TEST(SimModel, MouseDisplacementMatchesArcModel) {
   EXPECT_NEAR(ly, d.y * p.left.counts_per_m, 1e-9);
 }
 
-void expect_recovers(const sim::SimMice& m) {
+void expect_recovers(const sim::SimMice& m, const sim::Operator& op = sim::Operator()) {
   mrt::sim::Simulator simulator(sim::make_world(m, 5));
-  const auto runs = sim::calibration_runs(simulator);
+  const auto runs = sim::calibration_runs(simulator, 10, 5, op);
   ASSERT_EQ(runs.size(), 15u);
   const CalibrationResult res = calibrate(runs);
   const ManualGeometry g = manual_geometry(m.truth), e = res.geometry;
@@ -59,6 +59,15 @@ void expect_recovers(const sim::SimMice& m) {
 
 TEST(SimCalibration, RecoversParametersWithoutNoise) { expect_recovers(real_mice(0.0)); }
 TEST(SimCalibration, RecoversParametersWithNoise) { expect_recovers(real_mice(0.01)); }
+
+TEST(SimCalibration, RecoversParametersWithAnImperfectOperator) {
+  // Pushes of 500 +- 2 mm and turns of 360 +- 0.3 degrees (1 sigma).
+  sim::Operator op;
+  op.push_sigma = 0.002;
+  op.turn_sigma = deg_to_rad(0.3);
+  op.seed = 31;
+  expect_recovers(real_mice(0.01), op);
+}
 
 TEST(SimCalibration, RecoversManualPlacement) {
   sim::SimMice m;
