@@ -75,22 +75,24 @@ void RunTwoCommunities(const char* mode, size_t expect21, size_t expect22, const
   if (p1 > p2) std::swap(p1, p2);
   WriteFile(d1 + "/a1.cfg", NetLine(FreePort()) + IpLine(mode, 0, p1, p2));
   WriteFile(d2 + "/a2.cfg", NetLine(FreePort()) + IpLine(mode, 0, p2, p1));
-  auto b2 = Agora({"--inner-dir", d2, "--subscribe", "21", "--subscribe", "22", "--duration", "3", "--out",
+  // B2 stops 700 ms after the expected messages: anything else would show up.
+  auto b2 = Agora({"--inner-dir", d2, "--subscribe", "21", "--subscribe", "22", "--expect",
+                   std::to_string(expect21 + expect22), "--linger", "700", "--duration", "20", "--out",
                    d2 + "/b2.txt"});
   ASSERT_TRUE(WaitReady(d2 + "/b2.txt"));
   auto a2 = Agora({"--config", d2 + "/a2.cfg", "--inner-dir", d2, "--no-finder", "--subscribe", "99", "--duration",
-                   "3", "--out", d2 + "/a2.txt"});
+                   "30", "--out", d2 + "/a2.txt"});
   ASSERT_TRUE(WaitReady(d2 + "/a2.txt"));
   auto a1 = Agora({"--config", d1 + "/a1.cfg", "--inner-dir", d1, "--no-finder", "--publish", "21", "--count", "10",
-                   "--rate", "100", "--wait-peers", "2", "--subscribe", "99", "--duration", "2.5", "--out",
+                   "--rate", "100", "--wait-peers", "2", "--subscribe", "99", "--duration", "30", "--out",
                    d1 + "/a1.txt"});
   ASSERT_TRUE(WaitReady(d1 + "/a1.txt"));
   auto b1 = Agora({"--inner-dir", d1, "--publish", "22", "--count", "10", "--rate", "100", "--wait-peers", "1",
-                   "--duration", "5", "--out", d1 + "/b1.txt"});
-  EXPECT_EQ(b1->Wait(8000), 0);
-  a1->Wait(8000);
-  a2->Wait(8000);
-  b2->Wait(8000);
+                   "--duration", "20", "--out", d1 + "/b1.txt"});
+  EXPECT_EQ(b1->Wait(20000), 0);
+  EXPECT_EQ(b2->Wait(20000), 0) << Slurp(d2 + "/b2.txt");
+  a1->Kill();
+  a2->Kill();
   size_t n21 = 0, n22 = 0;
   for (const auto& l : Lines(d2 + "/b2.txt", "recv ")) {
     if (Field(l, "type") == "21") {
@@ -123,13 +125,17 @@ TEST(Integration, BridgesInACycleDoNotLoop) {
   WriteFile(d + "/b.cfg", NetLine(FreePort()) + IpLine(br, 15, ba, ab) + IpLine(br, 15, bc, cb));
   WriteFile(d + "/c.cfg", NetLine(FreePort()) + IpLine(br, 15, ca, ac) + IpLine(br, 15, cb, bc));
   std::vector<std::unique_ptr<Process>> ps;
+  // Each Agora stops 700 ms after its 20 messages: copies would show up.
   for (const char* n : {"b", "c"})
     ps.push_back(Agora({"--config", d + "/" + n + ".cfg", "--no-inner", "--no-finder", "--subscribe", "18",
-                        "--duration", "3", "--out", d + "/" + n + ".txt"}));
+                        "--expect", "20", "--linger", "700", "--duration", "20", "--out", d + "/" + n + ".txt"}));
+  ASSERT_TRUE(WaitReady(d + "/b.txt"));
+  ASSERT_TRUE(WaitReady(d + "/c.txt"));
   auto a = Agora({"--config", d + "/a.cfg", "--no-inner", "--no-finder", "--subscribe", "18", "--publish", "18",
-                  "--count", "20", "--rate", "200", "--wait-peers", "2", "--duration", "2.5", "--out", d + "/a.txt"});
-  a->Wait(8000);
-  for (auto& p : ps) p->Wait(8000);
+                  "--count", "20", "--rate", "200", "--wait-peers", "2", "--expect", "20", "--linger", "700",
+                  "--duration", "20", "--out", d + "/a.txt"});
+  EXPECT_EQ(a->Wait(25000), 0);
+  for (auto& p : ps) EXPECT_EQ(p->Wait(25000), 0);
   // A's subscriber gets A's messages once, from its own PostOffice (hops 0),
   // never again after a trip round the triangle.
   auto own = Lines(d + "/a.txt", "recv ");

@@ -36,6 +36,7 @@ const char* kUsage = R"(usage: dcdt_agora [options]
                          (inner peers + connected channels)
   --subscribe TYPE[:SCOPE]  subscribe (SCOPE local|remote|all, default all); repeatable
   --expect N             exit 0 once N messages were received (1 if not within --duration)
+  --linger MS            after --expect is met, keep receiving MS milliseconds (default 0)
   --duration S           run at most S seconds (default 10)
   --out FILE             write received messages and status lines there (default stdout)
   --check-xml FILE       validate an XML message file and exit (0 valid, 2 invalid)
@@ -77,6 +78,7 @@ struct Options {
   int wait_peers = 0;
   std::vector<std::pair<int, RequestType>> subs;
   long expect = -1;
+  long linger_ms = 0;
   double duration = 10;
   std::string out;
 };
@@ -254,6 +256,8 @@ int Run(int argc, char** argv) {
       o.subs.emplace_back(ParseType(s.substr(0, c)), c == std::string::npos ? DCDT_ALL_MSG : ParseScope(s.substr(c + 1)));
     } else if (a == "--expect") {
       o.expect = std::stol(need(i));
+    } else if (a == "--linger") {
+      o.linger_ms = std::stol(need(i));
     } else if (a == "--duration") {
       o.duration = std::stod(need(i));
     } else if (a == "--out") {
@@ -306,6 +310,8 @@ int Run(int argc, char** argv) {
     }
     if (o.expect >= 0 && sub.received >= o.expect) {
       ok = true;
+      // Late or duplicate messages would show up during the linger.
+      std::this_thread::sleep_for(std::chrono::milliseconds(o.linger_ms));
       break;
     }
     // Without --expect and without subscriptions: done when publishing is.
