@@ -1,5 +1,6 @@
 #include "mrt_brian/brian.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "mrt_brian/expression_compiler.h"
@@ -9,6 +10,7 @@
 namespace mrt::brian {
 
 using mrt::common::ParseError;
+namespace fs = std::filesystem;
 
 namespace {
 // The 2009 engine stored crisp data as float.
@@ -41,8 +43,16 @@ DefuzzMethod parse_defuzz_method(const std::string& s) {
   throw std::invalid_argument("defuzzification must be 'singleton' or 'barycenter', got '" + s + "'");
 }
 
+namespace {
+std::vector<std::string> custom_extensions(const BrianOptions& o) {
+  std::vector<std::string> out;
+  for (const auto& kv : o.behavior_kinds) out.push_back(kv.first);
+  return out;
+}
+}  // namespace
+
 Brian::Brian(const ConfigFiles& files, const BrianOptions& options) : options_(options) {
-  build(ParsedConfig::load(files));
+  build(ParsedConfig::load(files, custom_extensions(options)));
 }
 
 Brian::Brian(const ParsedConfig& config, const BrianOptions& options) : options_(options) { build(config); }
@@ -63,7 +73,7 @@ Brian::Brian(const std::string& fuzzyassoc, const std::string& fuzzyshapes, cons
   f.s_ftoc = defuzzyassoc;
   f.s_shape = defuzzyshapes;
   f.base_dir = ".";
-  build(ParsedConfig::load(f));
+  build(ParsedConfig::load(f, custom_extensions(options)));
 }
 
 std::unique_ptr<Brian> Brian::from_path(const std::string& path, const BrianOptions& options) {
@@ -111,12 +121,21 @@ void Brian::build(const ParsedConfig& c) {
 
   for (std::size_t i = 0; i < c.behaviors.size(); ++i) {
     const BehaviorDef& b = c.behaviors[i];
-    auto rb = std::make_unique<RuleBehavior>(b.name, b.level, c.rules[i], c.behavior_files[i], compiler,
-                                             defuzzyfier_, pool_);
-    if (legacy && b.level == 1 && rb->deletes())
+    std::unique_ptr<Behavior> beh;
+    const auto kind = options_.behavior_kinds.find(fs::path(c.behavior_files[i]).extension().string());
+    if (kind != options_.behavior_kinds.end() && kind->second) {
+      beh = kind->second(b, c.behavior_files[i], defuzzyfier_);
+      if (!beh || beh->name() != b.name || beh->level() != b.level)
+        throw ParseError(files.behaviors, b.line, b.column,
+                         "the factory for '" + kind->first + "' did not build behaviour '" + b.name + "' at its level");
+    } else {
+      beh = std::make_unique<RuleBehavior>(b.name, b.level, c.rules[i], c.behavior_files[i], compiler,
+                                           defuzzyfier_, pool_);
+    }
+    if (legacy && b.level == 1 && beh->deletes())
       throw ParseError(files.behaviors, b.line, b.column,
                        "behaviour '" + b.name + "' uses &DEL at level 1, where there is nothing to delete");
-    engine_.add(std::move(rb));
+    engine_.add(std::move(beh));
   }
   engine_.set_filter(std::make_unique<ThresholdFilter>(options_.threshold,
                                                        options_.threshold_reliability.value_or(legacy)));

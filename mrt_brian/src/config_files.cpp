@@ -89,7 +89,7 @@ std::string ConfigFiles::resolve(const std::string& p) const {
   return (fs::path(base_dir) / p).string();
 }
 
-ParsedConfig ParsedConfig::load(const ConfigFiles& files) {
+ParsedConfig ParsedConfig::load(const ConfigFiles& files, const std::vector<std::string>& custom_extensions) {
   ParsedConfig c;
   c.files = files;
   c.assocs = parse_associations(read_text_file(files.ctof), files.ctof);
@@ -111,7 +111,10 @@ ParsedConfig ParsedConfig::load(const ConfigFiles& files) {
       throw ParseError(files.behaviors, b.line, b.column, "cannot open behaviour file '" + path + "'");
     }
     c.behavior_files.push_back(path);
-    c.rules.push_back(parse_rules(text, path));
+    const std::string ext = fs::path(path).extension().string();
+    bool custom = false;
+    for (const auto& e : custom_extensions) custom = custom || e == ext;
+    c.rules.push_back(custom ? std::vector<RuleDef>{} : parse_rules(text, path));
   }
   return c;
 }

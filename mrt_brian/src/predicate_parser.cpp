@@ -22,7 +22,7 @@ void set_proposal(TokenStream& ts, const Token& t, ExprAst& e) {
 
 namespace {
 constexpr int kMaxDepth = 256;  // deeper nesting would only exhaust the stack
-int depth = 0;
+thread_local int depth = 0;
 struct DepthGuard {
   DepthGuard() { ++depth; }
   ~DepthGuard() { --depth; }

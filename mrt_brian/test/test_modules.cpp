@@ -173,3 +173,25 @@ TEST(Modules, CustomBehaviorPlugsIntoTheEngine) {
   EXPECT_EQ(log.levels, (std::vector<int>{2, 3}));
   EXPECT_EQ(active, (std::vector<std::uint8_t>{1, 0, 1}));
 }
+
+TEST(Modules, CustomBehaviorKindThroughTheFacade) {
+  const fs::path d = make_base("unused");
+  write(d / "behavior.txt", "(level 1 Cruise cruise.rul)\n(level 2 Brake brake.const)\n");
+  write(d / "brake.const", "Speed STOP 0.5\n");
+  BrianOptions opt;
+  opt.behavior_kinds[".const"] = [](const BehaviorDef& e, const std::string& path,
+                                   const Defuzzyfier& dz) -> std::unique_ptr<Behavior> {
+    std::ifstream in(path);
+    std::string action, label;
+    double value = 0;
+    in >> action >> label >> value;
+    const int a = dz.action_id(action);
+    if (a < 0) throw mrt::common::ParseError(path, 1, 1, "unknown action");
+    return std::make_unique<ConstantBehavior>(e.name, e.level, a, dz.label_id(a, label), value);
+  };
+  Brian b(ConfigFiles::from_directory(d.string()), opt);
+  // Cruise as in ManualProfileHandWorked (FAST 0.2, SLOW 0.3, weight 0.4);
+  // Brake (CANDO 0.6, WANT 0.6) proposes STOP 0.5 -> 0.3.
+  // (30*0.08 + 10*0.12 + 0*0.3) / 0.5 = 7.2.
+  EXPECT_NEAR(command(b.run({{"Obstacle", 40, 0.5}}), "Speed"), 7.2, 1e-9);
+}

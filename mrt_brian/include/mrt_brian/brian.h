@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +26,13 @@
 
 namespace mrt::brian {
 
+/// Builds a behaviour of a kind other than rules (manual §10.3.6: "for a new
+/// kind of behavior, you have to define a new child parser class") from its
+/// behaviour-list entry and resolved file; actions are resolved through the
+/// Defuzzyfier. Throw mrt::common::ParseError on a bad file.
+using BehaviorFactory = std::function<std::unique_ptr<Behavior>(
+    const BehaviorDef& entry, const std::string& path, const Defuzzyfier& defuzzyfier)>;
+
 struct BrianOptions {
   Profile profile = Profile::kManual;
   /// CANDO threshold (also WANT in legacy).
@@ -34,6 +43,9 @@ struct BrianOptions {
   /// Default: manual average, legacy max.
   std::optional<FloatComposerKind> float_composer;
   DefuzzMethod defuzzification = DefuzzMethod::kSingleton;
+  /// Other behaviour kinds, by file extension of the behaviour-list entry
+  /// (e.g. ".const"); everything else is a rules file.
+  std::map<std::string, BehaviorFactory> behavior_kinds;
 };
 
 /// String forms used by the tools and the node ("manual", "legacy",

@@ -39,8 +39,10 @@ struct ParsedConfig {
   std::vector<std::vector<RuleDef>> rules;  // per behaviour
 
   /// Reads and parses all files; throws mrt::common::ParseError at the first
-  /// syntax error.
-  static ParsedConfig load(const ConfigFiles& files);
+  /// syntax error. Behaviour files whose extension is in `custom_extensions`
+  /// are not rules files: they are only checked to exist (their rules stay
+  /// empty) and are left to a BehaviorFactory.
+  static ParsedConfig load(const ConfigFiles& files, const std::vector<std::string>& custom_extensions = {});
 };
 
 }  // namespace mrt::brian
