@@ -114,6 +114,6 @@ int main() {
   auto pct = [&](double p) { return lat_us.empty() ? -1.0 : lat_us[static_cast<std::size_t>(p * (lat_us.size() - 1))]; };
   std::printf("pty_command_to_setpoint_p50: %.1f us\n", pct(0.5));
   std::printf("pty_command_to_setpoint_p99: %.1f us\n", pct(0.99));
-  std::printf("pty_replies_received: %zu of 2000\n", lat_us.size());
+  std::printf("pty_replies_lost: %zu frames\n", 2000 - lat_us.size());
   return 0;
 }
