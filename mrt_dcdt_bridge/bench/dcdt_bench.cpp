@@ -18,8 +18,21 @@
 #include <thread>
 #include <vector>
 
+#include <mrt_msgs/Percept.h>
+#include <ros/ros.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+
 #include "mrt_dcdt_bridge/agora.h"
 #include "mrt_dcdt_bridge/xml_message.h"
+
+extern char** environ;
 
 using namespace mrt::dcdt;
 using Clock = std::chrono::steady_clock;
@@ -181,6 +194,128 @@ Result RawTcp(int n_throughput, int n_latency) {
   return r;
 }
 
+pid_t Spawn(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  // Children's logs go to /dev/null: stdout carries only `name: value unit` lines.
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  return rc == 0 ? pid : -1;
+}
+
+void Stop(pid_t pid) {
+  if (pid <= 0) return;
+  ::kill(pid, SIGINT);
+  for (int i = 0; i < 300; ++i) {
+    int st;
+    if (waitpid(pid, &st, WNOHANG) == pid) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ::kill(pid, SIGKILL);
+  int st;
+  waitpid(pid, &st, 0);
+}
+
+// Legacy Agora (this process) -> dcdt_bridge_node (a child process, private
+// rosmaster on a free loopback port) -> ROS subscriber (this process).
+bool BridgeToRos(Result* out, int n_throughput, int n_latency) {
+  char dir[] = "/tmp/dcdt_bench_ros_XXXXXX";
+  if (!::mkdtemp(dir)) return false;
+  const std::string d = dir;
+  const int port = FreePort();
+  const std::string uri = "http://127.0.0.1:" + std::to_string(port);
+  ::setenv("ROS_MASTER_URI", uri.c_str(), 1);
+  ::setenv("ROS_HOME", d.c_str(), 1);
+  ::setenv("ROS_LOG_DIR", d.c_str(), 1);
+  ::setenv("ROS_IP", "127.0.0.1", 1);
+  {
+    std::ofstream m(d + "/mapping.yaml");
+    m << "to_ros:\n  - {type: MSG_FROM_VISION, topic: /dcdt_bench/percepts, kind: percept}\n";
+  }
+  pid_t master = Spawn({"rosmaster", "--core", "-p", std::to_string(port)});
+  if (master <= 0) return false;
+  pid_t bridge = Spawn({DCDT_BRIDGE_NODE, "__name:=dcdt_bench_bridge", "_mapping:=" + d + "/mapping.yaml",
+                        "_inner_dir:=" + d, "_queue_size:=100000"});
+  int argc = 0;
+  ros::init(argc, nullptr, "dcdt_bench", ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+  bool ok = false;
+  for (int i = 0; i < 200 && !(ok = ros::master::check()); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  if (ok) {
+    std::atomic<size_t> got1{0};
+    std::mutex m;
+    std::vector<double> lat;
+    ros::NodeHandle nh;
+    auto sub = nh.subscribe<mrt_msgs::Percept>(
+        "/dcdt_bench/percepts", 100000, [&](const mrt_msgs::Percept::ConstPtr& p) {
+          if (p->sensor == "latency") {
+            std::lock_guard<std::mutex> l(m);
+            lat.push_back((Now() - static_cast<int64_t>(p->header.stamp.toNSec())) / 1e3);
+          } else {
+            ++got1;
+          }
+        });
+    ros::AsyncSpinner spinner(1);
+    spinner.start();
+    AgoraOptions o;
+    o.inner_dir = d;
+    Agora a(o);
+    Sender s(&a);
+    a.AddMember(&s);
+    XmlMessage x;
+    x.sensor = "throughput";
+    x.objects.push_back({"ball", "Ball", {{"distance", 2.4, "", 0.1, 0.9}, {"bearing", -0.35, "", 0.02, 0.9}}});
+    const std::string payload = EncodeXml(x);
+    auto wait_until = [](const std::function<bool()>& f, double s) {
+      auto end = Clock::now() + std::chrono::milliseconds(static_cast<long>(s * 1000));
+      while (Clock::now() < end && !f()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      return f();
+    };
+    ok = wait_until([&] { return a.Stats().inner_peers >= 1 && sub.getNumPublishers() >= 1; }, 20);
+    for (int i = 0; ok && i < 400 && got1 == 0; ++i) {  // warm-up until the path delivers
+      s.Send(MSG_FROM_VISION, DCDT_DW_GUARANTEED, payload);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ok = ok && got1 > 0;
+    if (ok) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      const size_t base = got1;
+      auto t0 = Clock::now();
+      for (int i = 0; i < n_throughput; ++i) {
+        s.Send(MSG_FROM_VISION, DCDT_DW_GUARANTEED, payload);
+        while (static_cast<size_t>(i) > got1 - base + 2000) std::this_thread::yield();
+      }
+      wait_until([&] { return got1 - base >= static_cast<size_t>(n_throughput); }, 10);
+      out->received = got1 - base;
+      out->rate = out->received / std::chrono::duration<double>(Clock::now() - t0).count();
+      for (int i = 0; i < n_latency; ++i) {
+        XmlMessage y = x;
+        y.sensor = "latency";
+        const int64_t now = Now();
+        y.sec = now / 1000000000;
+        y.nsec = static_cast<uint32_t>(now % 1000000000);
+        s.Send(MSG_FROM_VISION, DCDT_DW_GUARANTEED, EncodeXml(y));
+        std::this_thread::sleep_for(std::chrono::microseconds(1000));
+      }
+      wait_until([&] { std::lock_guard<std::mutex> l(m); return lat.size() >= static_cast<size_t>(n_latency); }, 5);
+      std::lock_guard<std::mutex> l(m);
+      out->p50 = Percentile(lat, 0.5);
+      out->p99 = Percentile(lat, 0.99);
+    }
+    spinner.stop();
+    sub.shutdown();
+    ros::shutdown();
+  }
+  Stop(bridge);
+  Stop(master);
+  return ok;
+}
+
 void Print(const char* name, const Result& r) {
   std::printf("%s_throughput: %.0f msg/s\n", name, r.rate);
   std::printf("%s_latency_p50: %.1f us\n", name, r.p50);
@@ -229,6 +364,13 @@ int main() {
     x.objects.push_back({"ball", "Ball", {{"distance", 2.4, "", 0.1, 0.9}, {"bearing", -0.35, "", 0.02, 0.9}}});
     Result bridge = Measure(a, b, DCDT_DW_GUARANTEED, 20000, 2000, EncodeXml(x), true);
     Print("legacy_agora_to_bridge_member_xml", bridge);
+  }
+  Result ros_path;
+  if (BridgeToRos(&ros_path, 20000, 2000)) {
+    Print("legacy_agora_to_bridge_to_ros_subscriber", ros_path);
+    std::printf("bridge_to_ros_vs_dcdt_tcp_p50_ratio: %.3f ratio\n", tcp.p50 > 0 ? ros_path.p50 / tcp.p50 : 0.0);
+  } else {
+    std::printf("# legacy_agora_to_bridge_to_ros_subscriber: skipped (no rosmaster or the bridge did not start)\n");
   }
   std::printf("dcdt_tcp_vs_raw_tcp_throughput_ratio: %.3f ratio\n", tcp.rate / raw.rate);
   std::printf("dcdt_tcp_vs_raw_tcp_p99_ratio: %.3f ratio\n", raw.p99 > 0 ? tcp.p99 / raw.p99 : 0.0);

@@ -61,15 +61,18 @@ class StreamLink {
     if (thread_.joinable()) thread_.join();
   }
   void Send(const MsgPtr& m) {
+    bool was_empty;
     {
       std::lock_guard<std::mutex> l(mu_);
       if (outq_.size() >= kMaxOutQueue) {
         outq_.pop_front();
         ++c.dropped;
       }
+      was_empty = outq_.empty();
       outq_.push_back(m);
     }
-    waker_.Wake();
+    // The thread drains the whole queue: only the first message needs a wake-up.
+    if (was_empty) waker_.Wake();
   }
   bool dead() const { return dead_; }
   uint64_t Pending() const {
@@ -228,15 +231,18 @@ class UdpLink {
     fd_ = -1;
   }
   void Send(const MsgPtr& m) {
+    bool was_empty;
     {
       std::lock_guard<std::mutex> l(mu_);
       if (outq_.size() >= kMaxOutQueue) {
         outq_.pop_front();
         ++c.dropped;
       }
+      was_empty = outq_.empty();
       outq_.push_back(m);
     }
-    waker_.Wake();
+    // The thread drains the whole queue: only the first message needs a wake-up.
+    if (was_empty) waker_.Wake();
   }
   uint64_t Pending() const {
     std::lock_guard<std::mutex> l(mu_);
