@@ -6,6 +6,7 @@
 #include <mrt_msgs/Percept.h>
 
 #include <atomic>
+#include <map>
 #include <mutex>
 
 #include "mrt_dcdt_bridge/xml_message.h"
@@ -174,6 +175,36 @@ TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
   std::lock_guard<std::mutex> l(m);
   EXPECT_EQ(value("parse_errors"), "0");
   EXPECT_GT(std::stoi(value("in.18")), 0);
+}
+
+TEST(Bridge, MalformedDcdtPayloadIsDroppedCountedAndTheNodeKeepsRunning) {
+  const std::string out = g_inner_dir + "_bad.txt";
+  dcdt_test::Process bad({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--text",
+                          "<message time='1'><object name='x'></message> {i}", "--count", "3", "--rate", "50",
+                          "--wait-peers", "1", "--duration", "10", "--out", out});
+  EXPECT_EQ(bad.Wait(15000), 0);
+  ros::NodeHandle nh;
+  std::mutex m;
+  std::map<std::string, std::string> values;
+  auto sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
+        for (const auto& s : a->status) {
+          if (s.name.find("DCDT Agora") == std::string::npos) continue;
+          std::lock_guard<std::mutex> l(m);
+          for (const auto& kv : s.values) values[kv.key] = kv.value;
+          values["level"] = std::to_string(s.level);
+        }
+      });
+  ASSERT_TRUE(SpinUntil(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return values.count("parse_errors") && values["parse_errors"] == "3";
+      },
+      10.0));
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_EQ(values["level"], "1");  // WARN
+  EXPECT_NE(values["last_error"].find("not well-formed"), std::string::npos) << values["last_error"];
+  EXPECT_EQ(values.count("in.25"), 0u);  // nothing of type 25 reached ROS
 }
 
 }  // namespace

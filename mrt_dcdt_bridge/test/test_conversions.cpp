@@ -1,0 +1,89 @@
+// mrt_msgs <-> XML conversions of the node: lossless through the wire text.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "ros/conversions.h"
+
+using namespace mrt::dcdt;
+
+namespace {
+
+mrt_msgs::Percept Sample() {
+  mrt_msgs::Percept p;
+  p.header.stamp.sec = 1763776000;
+  p.header.stamp.nsec = 999999999;
+  p.header.frame_id = "robot2/base_link";
+  p.sensor = "omnivision";
+  p.robot = "ianus3";
+  for (int i = 0; i < 3; ++i) {
+    mrt_msgs::PerceptObject o;
+    o.name = "obj" + std::to_string(i) + " <&>";
+    o.membership_class = i == 0 ? "Ball" : "Obstacle";
+    mrt_msgs::Attribute a;
+    a.name = "distance";
+    a.value = 1.0 / (i + 3);
+    a.variability = 1e-9 * i;
+    a.reliability = 0.1 * i;
+    o.attributes.push_back(a);
+    a.name = "colour";
+    a.value = 0;
+    a.symbol = "orange";
+    o.attributes.push_back(a);
+    a.name = "big";
+    a.symbol = "";
+    a.value = std::numeric_limits<double>::max();
+    o.attributes.push_back(a);
+    p.objects.push_back(o);
+  }
+  return p;
+}
+
+TEST(Conversions, PerceptRoundTripThroughXmlTextIsExact) {
+  const auto p = Sample();
+  const auto q = ros_conv::ToPercept(DecodeXml(EncodeXml(ros_conv::FromPercept(p))));
+  EXPECT_EQ(q.header.stamp, p.header.stamp);
+  EXPECT_EQ(q.header.frame_id, p.header.frame_id);
+  EXPECT_EQ(q.sensor, p.sensor);
+  EXPECT_EQ(q.robot, p.robot);
+  // Every field: the generated messages compare member by member.
+  EXPECT_TRUE(q.objects == p.objects);
+}
+
+TEST(Conversions, CrispDataAndCommandsRoundTrip) {
+  mrt_msgs::CrispDataArray c;
+  c.header.stamp.sec = 5;
+  c.header.stamp.nsec = 7;
+  c.header.frame_id = "f";
+  for (int i = 0; i < 4; ++i) {
+    mrt_msgs::CrispData d;
+    d.name = "BallDistance" + std::to_string(i);
+    d.value = 123.456 * i;
+    d.reliability = 0.25 * i;
+    c.data.push_back(d);
+  }
+  const auto c2 = ros_conv::ToCrispData(DecodeXml(EncodeXml(ros_conv::FromCrispData(c))));
+  EXPECT_EQ(c2.header.stamp, c.header.stamp);
+  EXPECT_TRUE(c2.data == c.data);
+
+  mrt_msgs::CommandArray k;
+  k.header.stamp.sec = 9;
+  mrt_msgs::Command cmd;
+  cmd.name = "SpeedModule";
+  cmd.value = 42.5;
+  k.commands.push_back(cmd);
+  cmd.name = "SpeedAngle";
+  cmd.value = -17.25;
+  k.commands.push_back(cmd);
+  const auto k2 = ros_conv::ToCommands(DecodeXml(EncodeXml(ros_conv::FromCommands(k))));
+  EXPECT_TRUE(k2.commands == k.commands);
+}
+
+TEST(Conversions, WrongShapeIsRejected) {
+  XmlMessage x;
+  x.objects.push_back({"ball", "Ball", {{"distance", 1, "", 0, 1}}});
+  EXPECT_THROW(ros_conv::ToCommands(x), XmlError);
+  EXPECT_THROW(ros_conv::ToCrispData(x), XmlError);
+}
+
+}  // namespace
