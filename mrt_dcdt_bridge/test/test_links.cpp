@@ -108,7 +108,17 @@ TEST(Links, UdpWarrantiesNoneLosesRetransmitRecovers) {
   b.GetPostOffice().Register(&box);
   b.GetPostOffice().Subscribe(500, 40, DCDT_ALL_MSG);
   b.GetPostOffice().Subscribe(500, 41, DCDT_ALL_MSG);
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // both UDP sockets bound
+  // Both UDP sockets bound and the path working: a retransmitted probe arrives.
+  b.GetPostOffice().Subscribe(500, 99, DCDT_ALL_MSG);
+  bool probed = false;
+  for (int i = 0; i < 20 && !probed; ++i) {
+    s.Send(99, DCDT_DW_RETRANSMIT, -1);
+    probed = WaitFor([&] { return b.GetPostOffice().Pending(&box) > 0; }, 300);
+  }
+  ASSERT_TRUE(probed);
+  while (b.GetPostOffice().Pop(&box)) {
+  }
+  b.GetPostOffice().Unsubscribe(500, 99, DCDT_ALL_MSG);
   for (int i = 0; i < 20; ++i) s.Send(40, DCDT_DW_NONE, i);
   for (int i = 0; i < 20; ++i) s.Send(41, DCDT_DW_RETRANSMIT, i);
   std::map<int, std::set<std::string>> got;
