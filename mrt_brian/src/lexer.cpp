@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -121,6 +122,13 @@ void TokenStream::fail(const Token& at, const std::string& message) const {
 }
 
 std::string read_text_file(const std::string& path) {
+  // Configuration files are small regular files: refuse devices, FIFOs and
+  // anything that would not fit a rule base.
+  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw ParseError(path, 0, 0, "cannot open file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw ParseError(path, 0, 0, "not a regular file");
+  if (std::filesystem::file_size(path, ec) > kMaxBytes) throw ParseError(path, 0, 0, "file larger than 64 MiB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(path, 0, 0, "cannot open file");
   std::ostringstream ss;

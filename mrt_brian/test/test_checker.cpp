@@ -90,6 +90,7 @@ TEST_F(CheckerTest, UnknownFuzzySetType) {
   EXPECT_EQ(fs::path(d[0].file).filename(), "shape_ctof.txt");
   EXPECT_EQ(d[0].line, 2);
   EXPECT_NE(d[0].message.find("unknown fuzzy set type"), std::string::npos);
+  EXPECT_EQ(run_tool(dir_.string()), 1);
 }
 
 TEST_F(CheckerTest, UnknownShape) {
@@ -99,6 +100,7 @@ TEST_F(CheckerTest, UnknownShape) {
   EXPECT_EQ(fs::path(d[0].file).filename(), "ctof.txt");
   EXPECT_EQ(d[0].line, 2);
   EXPECT_NE(d[0].message.find("unknown shape 'SPX'"), std::string::npos);
+  EXPECT_EQ(run_tool(dir_.string()), 1);
 }
 
 TEST_F(CheckerTest, UnknownOutputShape) {
@@ -107,6 +109,7 @@ TEST_F(CheckerTest, UnknownOutputShape) {
   ASSERT_GE(d.size(), 1u);
   EXPECT_EQ(fs::path(d[0].file).filename(), "s_ftoc.txt");
   EXPECT_EQ(d[0].line, 2);
+  EXPECT_EQ(run_tool(dir_.string()), 1);
 }
 
 TEST_F(CheckerTest, UnknownLabel) {
@@ -173,6 +176,26 @@ TEST_F(CheckerTest, ReportsEveryProblemNotOnlyTheFirst) {
   write(dir_ / "want.txt", "Cruis = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n");
   write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNeer);\n");
   EXPECT_EQ(Checker().check_path(dir_.string()).size(), 2u);
+}
+
+TEST(CheckerShipped, EveryRuleBaseUnderConfigIsClean) {
+  int bases = 0;
+  for (const auto& e : fs::directory_iterator(MRT_BRIAN_CONFIG_DIR)) {
+    if (!e.is_directory()) continue;
+    ++bases;
+    const auto d = Checker().check_path(e.path().string());
+    EXPECT_TRUE(d.empty()) << e.path() << ": " << (d.empty() ? "" : d[0].str());
+    if (fs::exists(e.path() / "BrianConfigs.ini")) {
+      EXPECT_TRUE(Checker().check_path((e.path() / "BrianConfigs.ini").string()).empty()) << e.path();
+    }
+  }
+  EXPECT_GE(bases, 1);  // config/brian/harvesting
+}
+
+TEST(CheckerShipped, NotARegularFile) {
+  const auto d = Checker().check_path("/dev/null");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_NE(d[0].message.find("not a regular file"), std::string::npos);
 }
 
 TEST(CheckerShipped, ReferenceRuleBases) {

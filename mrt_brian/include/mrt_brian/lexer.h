@@ -45,7 +45,8 @@ class TokenStream {
   std::string file_;
 };
 
-/// Reads a whole file; throws ParseError(path, 0, 0, "cannot open file").
+/// Reads a whole regular file of at most 64 MiB; throws
+/// ParseError(path, 0, 0, "cannot open file ...") otherwise.
 std::string read_text_file(const std::string& path);
 
 }  // namespace mrt::brian
