@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
               << " commands applied, " << f.commands_rejected() << " rejected, " << f.rx_stats().frames_bad()
               << " bad frames, " << f.watchdog_trips() << " watchdog trips, " << s.bytes_in << " bytes in ("
               << s.bytes_corrupted_in << " corrupted, " << s.bytes_cut_in << " cut), " << s.bytes_out
-              << " bytes out (" << s.bytes_dropped_out << " dropped), " << s.late_ticks << " late ticks\n";
+              << " bytes out (" << s.bytes_dropped_out << " dropped), " << s.late_ticks << " late ticks, "
+              << s.paused_ticks << " paused ticks\n";
   } catch (const std::exception& e) {
     std::cerr << "airboard_emulator: " << e.what() << "\n";
     return 1;

@@ -22,6 +22,7 @@
 #include "mrt_airboard/odometry.h"
 #include "mrt_airboard/protocol.h"
 #include "mrt_airboard/serial_port.h"
+#include "mrt_airboard/state_tracker.h"
 #include "mrt_common/angle.h"
 
 namespace mrt::airboard {
@@ -187,7 +188,7 @@ class AirboardNode {
     dec_.clear();
     opened_at_ = now;
     last_frame_ = -1.0;
-    have_ticks_ = false;
+    tracker_.reset();
     odom_.reset();
     limiter_.reset();
     info_ok_ = false;
@@ -201,11 +202,11 @@ class AirboardNode {
     if (!port_.is_open() && !link_up_) return;
     port_.close();
     link_up_ = false;
-    have_ticks_ = false;
-    odom_.reset();
-    limiter_.reset();
     ROS_WARN("airboard_node: link lost (%s); motors considered stopped, reconnecting", why.c_str());
     publish_stopped();
+    tracker_.reset();
+    odom_.reset();
+    limiter_.reset();
   }
 
   void send(const Frame& f) {
@@ -340,33 +341,15 @@ class AirboardNode {
       ++unexpected_frames_;
       return;
     }
-    // Unwrap the board clock and the encoder counters.
-    if (!have_ticks_) {
-      ticks_.assign(n_, 0);
-      for (std::size_t i = 0; i < n_; ++i) ticks_[i] = s.motors[i].ticks;
-      raw_ticks_.assign(n_, 0);
-      board_time_ = s.time_ms * 1e-3;
-      clock_offset_ = now.toSec() - board_time_;
-      have_ticks_ = true;
-    } else {
-      const int32_t dms = static_cast<int32_t>(s.time_ms - last_time_ms_);
-      if (dms <= 0) {  // same STATE instant (reply and stream) or reordered: nothing new
-        last_state_ = s;
-        return;
-      }
-      board_time_ += dms * 1e-3;
-      for (std::size_t i = 0; i < n_; ++i)
-        ticks_[i] += static_cast<int32_t>(static_cast<uint32_t>(s.motors[i].ticks) - raw_ticks_[i]);
-      // Map board time to ROS time: the smallest offset seen is the one with
-      // the least transport delay; let it grow by 1000 ppm for clock drift.
-      clock_offset_ = std::min(clock_offset_ + 1e-3 * dms * 1e-3, now.toSec() - board_time_);
+    if (!tracker_.update(s, now.toSec())) {
+      last_state_ = s;  // same board instant (a reply and a streamed frame): nothing new to integrate
+      return;
     }
-    for (std::size_t i = 0; i < n_; ++i) raw_ticks_[i] = static_cast<uint32_t>(s.motors[i].ticks);
-    last_time_ms_ = s.time_ms;
     last_state_ = s;
     have_state_ = true;
-    const ros::Time stamp(board_time_ + clock_offset_);
-    odom_.update(ticks_, board_time_);
+    const std::vector<int64_t>& counts = tracker_.counts();
+    const ros::Time stamp(tracker_.host_stamp());
+    odom_.update(counts, tracker_.board_time());
 
     mrt_msgs::WheelState ws;
     ws.header.stamp = stamp;
@@ -376,7 +359,7 @@ class AirboardNode {
       ws.setpoint.push_back(m.setpoint);
       ws.speed.push_back(m.speed);
       ws.duty.push_back(m.duty);
-      ws.ticks.push_back(ticks_[i]);
+      ws.ticks.push_back(counts[i]);
       ws.status.push_back(m.status);
     }
     wheel_pub_.publish(ws);
@@ -450,8 +433,9 @@ class AirboardNode {
     ws.setpoint.assign(n_, 0.0);
     ws.speed.assign(n_, 0.0);
     ws.duty.assign(n_, 0.0);
-    ws.ticks.assign(ticks_.begin(), ticks_.end());
-    ws.ticks.resize(n_, 0);
+    ws.ticks.assign(n_, 0);
+    if (tracker_.valid() && tracker_.counts().size() == n_)
+      ws.ticks.assign(tracker_.counts().begin(), tracker_.counts().end());
     ws.status.assign(n_, mrt_msgs::WheelState::STATUS_OK);
     wheel_pub_.publish(ws);
     have_state_ = false;
@@ -535,14 +519,9 @@ class AirboardNode {
   uint64_t info_polls_ = 0;
   uint64_t control_cycles_ = 0;
 
-  bool have_ticks_ = false;
   bool have_state_ = false;
   BoardState last_state_;
-  std::vector<int64_t> ticks_;
-  std::vector<uint32_t> raw_ticks_;
-  uint32_t last_time_ms_ = 0;
-  double board_time_ = 0.0;
-  double clock_offset_ = 0.0;
+  StateTracker tracker_;
 
   uint64_t commands_sent_ = 0, commands_saturated_ = 0, dropped_inputs_ = 0, nacks_ = 0, unexpected_frames_ = 0;
   uint32_t reconnects_ = 0;

@@ -87,42 +87,52 @@ void PtyEmulator::flush() {
   stats_.bytes_dropped_out += out.size() - done;
 }
 
+bool PtyEmulator::handle_input() {
+  uint8_t buf[4096];
+  const ssize_t n = ::read(master_, buf, sizeof(buf));
+  if (n <= 0) return false;
+  stats_.bytes_in += static_cast<uint64_t>(n);
+  const bool cut = faults_.cut_rx_after >= 0.0 && fw_.time_ms() >= faults_.cut_rx_after * 1000.0;
+  if (cut) {
+    stats_.bytes_cut_in += static_cast<uint64_t>(n);
+    return true;
+  }
+  corrupt(buf, static_cast<std::size_t>(n), faults_.corrupt_rx, &stats_.bytes_corrupted_in);
+  fw_.receive(buf, static_cast<std::size_t>(n));
+  flush();
+  return true;
+}
+
 void PtyEmulator::run(const std::atomic<bool>& stop) {
   using clock = std::chrono::steady_clock;
   const auto period = std::chrono::microseconds(1000000 / fw_.config().control_hz);
+  // A real board never stalls; this process can (a loaded machine). Up to
+  // kMaxCatchUp late periods are caught up; beyond that board time pauses,
+  // so a stall of the emulator is not seen by the firmware as a silent PC.
+  constexpr int kMaxCatchUp = 20;
   auto next = clock::now() + period;
-  uint8_t buf[4096];
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = clock::now();
     if (now < next) {
       const auto wait = std::chrono::duration_cast<std::chrono::nanoseconds>(next - now);
       timespec ts{static_cast<time_t>(wait.count() / 1000000000), static_cast<long>(wait.count() % 1000000000)};
       pollfd p{master_, POLLIN, 0};
-      const int r = ::ppoll(&p, 1, &ts, nullptr);
-      if (r > 0 && (p.revents & POLLIN)) {
-        const ssize_t n = ::read(master_, buf, sizeof(buf));
-        if (n > 0) {
-          stats_.bytes_in += static_cast<uint64_t>(n);
-          const bool cut = faults_.cut_rx_after >= 0.0 && fw_.time_ms() >= faults_.cut_rx_after * 1000.0;
-          if (cut) {
-            stats_.bytes_cut_in += static_cast<uint64_t>(n);
-          } else {
-            corrupt(buf, static_cast<std::size_t>(n), faults_.corrupt_rx, &stats_.bytes_corrupted_in);
-            fw_.receive(buf, static_cast<std::size_t>(n));
-            flush();
-          }
-        }
-      }
+      if (::ppoll(&p, 1, &ts, nullptr) > 0 && (p.revents & POLLIN)) handle_input();
       continue;
     }
-    // One or more control periods are due.
+    // Control periods are due: first take what the PC sent meanwhile.
+    while (handle_input()) {
+    }
     int steps = 0;
-    while (clock::now() >= next && steps < 100) {
+    while (clock::now() >= next && steps < kMaxCatchUp) {
       fw_.step();
       next += period;
       if (++steps > 1) ++stats_.late_ticks;
     }
-    if (clock::now() >= next) next = clock::now() + period;  // far behind: drop the backlog
+    if (clock::now() >= next) {
+      stats_.paused_ticks += static_cast<uint64_t>((clock::now() - next) / period);
+      next = clock::now() + period;
+    }
     flush();
   }
 }

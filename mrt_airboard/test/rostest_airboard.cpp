@@ -120,14 +120,32 @@ class Airboard : public ::testing::Test {
 
 // A constant cmd_vel produces the commanded arc in the odometry within 1 %.
 TEST_F(Airboard, ConstantTwistDrawsTheCommandedArc) {
-  odom_.clear();
-  drive(4.0, vx_, vy_, omega_);
-  ASSERT_GT(odom_.size(), 100u);
-  // Steady state: from 1.5 s after the first sample to the end of the drive.
-  const double t0 = odom_.front().t + 1.5;
   std::size_t a = 0;
-  while (a < odom_.size() && odom_[a].t < t0) ++a;
-  ASSERT_LT(a + 50, odom_.size());
+  for (int attempt = 1; attempt <= 3; ++attempt) {
+    odom_.clear();
+    status_.clear();
+    drive(4.0, vx_, vy_, omega_);
+    ASSERT_GT(odom_.size(), 100u);
+    // Steady state: from 1.5 s after the first sample to the end of the drive.
+    const double t0 = odom_.front().t + 1.5;
+    a = 0;
+    while (a < odom_.size() && odom_[a].t < t0) ++a;
+    ASSERT_LT(a + 50, odom_.size());
+    // If this shared machine starved the node for 100 ms, the board's watchdog
+    // rightly stopped the wheels: that run says nothing about the arc.
+    uint32_t trips_before = 0, trips_after = 0;
+    bool seen = false;
+    for (const auto& st : status_) {
+      if (!st.connected) continue;
+      if (!seen && st.header.stamp.toSec() >= odom_[a].t - 0.2) {
+        trips_before = st.watchdog_trips;
+        seen = true;
+      }
+      trips_after = st.watchdog_trips;
+    }
+    if (trips_after == trips_before) break;
+    std::printf("arc: attempt %d disturbed by a watchdog trip (node starved), retrying\n", attempt);
+  }
   const Sample& s0 = odom_[a];
   const Sample& s1 = odom_.back();
   const double dt = s1.t - s0.t;
@@ -166,12 +184,16 @@ TEST_F(Airboard, WatchdogStopsTheWheels) {
   wheels_.clear();
   drive(3.5, vx_, vy_, omega_);
   ASSERT_EQ(status_.size(), wheels_.size());
-  // Find the first tripped state; the board time of the last valid command is
+  // The cut is permanent: find the first state of the final tripped run (an
+  // earlier, recovered trip can happen if this shared machine starves the
+  // node for 100 ms). The board time of the last valid command is
   // board_time - since_command.
-  std::size_t trip = 0;
-  while (trip < status_.size() && !(status_[trip].status & mrt_msgs::WheelState::STATUS_WATCHDOG)) ++trip;
+  ASSERT_FALSE(status_.empty());
+  std::size_t trip = status_.size();
+  while (trip > 0 && (status_[trip - 1].status & mrt_msgs::WheelState::STATUS_WATCHDOG)) --trip;
   ASSERT_LT(trip, status_.size()) << "the watchdog never tripped";
   const double t_cmd = status_[trip].board_time - status_[trip].since_command;
+  std::printf("watchdog: %u trip(s) in the run\n", status_.back().watchdog_trips);
   EXPECT_GE(status_[trip].since_command, 0.100 - 1e-9);
   EXPECT_GE(status_[trip].watchdog_trips, 1u);
   // Cruise speed before the cut.

@@ -22,7 +22,8 @@ struct LineFaults {
 struct EmulatorStats {
   uint64_t bytes_in = 0, bytes_out = 0, bytes_dropped_out = 0;
   uint64_t bytes_corrupted_in = 0, bytes_corrupted_out = 0, bytes_cut_in = 0;
-  uint64_t late_ticks = 0;  // control periods run late (catch-up)
+  uint64_t late_ticks = 0;    // control periods run late (caught up)
+  uint64_t paused_ticks = 0;  // periods skipped: the process was starved, board time paused
 };
 
 class PtyEmulator {
@@ -37,7 +38,8 @@ class PtyEmulator {
 
   const std::string& slave_path() const { return slave_path_; }
   /// Serves the board until `stop` becomes true: input is handled as soon as
-  /// it arrives, step() runs every 1 ms of wall time (late periods catch up).
+  /// it arrives, step() runs every 1 ms of wall time (up to 20 late periods
+  /// are caught up; after a longer stall of this process board time pauses).
   void run(const std::atomic<bool>& stop);
 
   /// Only between runs.
@@ -46,6 +48,7 @@ class PtyEmulator {
 
  private:
   void flush();
+  bool handle_input();  // one non-blocking read; false when nothing was read
   void corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count);
 
   Firmware fw_;

@@ -1,0 +1,58 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "mrt_airboard/state_tracker.h"
+
+using namespace mrt::airboard;
+
+namespace {
+BoardState state(uint32_t ms, std::vector<int32_t> ticks) {
+  BoardState s;
+  s.time_ms = ms;
+  for (int32_t t : ticks) {
+    MotorState m;
+    m.ticks = t;
+    s.motors.push_back(m);
+  }
+  return s;
+}
+}  // namespace
+
+TEST(StateTracker, UnwrapsCountsAndBoardClock) {
+  StateTracker t;
+  const int32_t max = std::numeric_limits<int32_t>::max();
+  const uint32_t near_wrap = 0xFFFFFFFFu - 5;  // board clock 6 ms before its wrap
+  ASSERT_TRUE(t.update(state(near_wrap, {max - 10, -7}), 100.0));
+  EXPECT_EQ(t.counts()[0], max - 10);
+  // 10 ms later both the clock and counter 0 have wrapped.
+  ASSERT_TRUE(t.update(state(near_wrap + 10, {std::numeric_limits<int32_t>::min() + 9, -27}), 100.010));
+  EXPECT_EQ(t.counts()[0], static_cast<int64_t>(max) + 10);
+  EXPECT_EQ(t.counts()[1], -27);
+  EXPECT_NEAR(t.board_time(), near_wrap * 1e-3 + 0.010, 1e-9);
+  // Same millisecond again (a reply after a streamed frame): nothing new.
+  EXPECT_FALSE(t.update(state(near_wrap + 10, {0, 0}), 100.011));
+  EXPECT_EQ(t.counts()[1], -27);
+  // A different motor count is refused.
+  EXPECT_FALSE(t.update(state(near_wrap + 20, {1, 2, 3}), 100.02));
+  t.reset();
+  EXPECT_TRUE(t.update(state(3, {5, 6, 7}), 200.0));
+  EXPECT_EQ(t.counts().size(), 3u);
+}
+
+TEST(StateTracker, MapsBoardTimeOnTheLeastDelayedSample) {
+  StateTracker t(0.0);
+  t.update(state(1000, {0}), 50.004);  // 4 ms transport delay
+  EXPECT_NEAR(t.host_stamp(), 50.004, 1e-12);
+  t.update(state(1010, {0}), 50.011);  // 1 ms: the offset shrinks
+  EXPECT_NEAR(t.host_stamp(), 50.011, 1e-12);
+  t.update(state(1020, {0}), 50.029);  // 9 ms of jitter does not move the stamp
+  EXPECT_NEAR(t.host_stamp(), 50.021, 1e-12);
+}
+
+TEST(StateTracker, FollowsAFasterHostClockWithinTheDriftBound) {
+  StateTracker t(1000.0);  // up to 1000 ppm
+  for (int i = 0; i <= 1000; ++i)  // host clock 500 ppm faster, 10 s
+    t.update(state(static_cast<uint32_t>(i * 10), {0}), i * 0.010 * 1.0005);
+  EXPECT_NEAR(t.host_stamp(), 10.005, 1e-4);
+}
