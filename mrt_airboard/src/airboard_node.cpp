@@ -268,7 +268,7 @@ class AirboardNode {
     if (fresh && source_ == Source::kWheelSpeed) {
       w = wheel_cmd_;
       if (saturate_preserving_direction(w, o_.base.max_wheel_speed) < 1.0) ++commands_saturated_;
-      limiter_.reset();
+      limiter_.hold(w);
     } else {
       const auto r = limiter_.update(fresh ? twist_ : Twist2D{}, dt);
       if (r.saturated) {

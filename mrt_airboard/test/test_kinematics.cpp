@@ -122,6 +122,13 @@ TEST(VelocityLimiter, DeadbandSaturationAndAcceleration) {
   r = fast.update({2.0, 0.0, 0.0}, 0.02);
   EXPECT_TRUE(r.saturated);
   expect_wheels(r.wheels, {-40.0, 20.0, 20.0});
+  // A ramp starts from held set-points.
+  p.max_wheel_accel = 100.0;
+  VelocityLimiter held(p);
+  held.hold({-25.0, 12.5, 12.5});
+  r = held.update({1.0, 0.0, 0.0}, 0.02);
+  EXPECT_FALSE(r.accel_limited);
+  expect_wheels(r.wheels, {-25.0, 12.5, 12.5});
   // Differential bases drop vy.
   VelocityLimiter diff(base_preset("ianus3"));
   r = diff.update({0.0, 1.0, 0.0}, 0.02);

@@ -124,6 +124,9 @@ class VelocityLimiter {
   /// Forgets the previous set-points (e.g. after the link was lost: the
   /// motors are considered stopped).
   void reset();
+  /// Sets the previous set-points (after wheel speeds were commanded
+  /// directly), so the next ramp starts from them.
+  void hold(const std::vector<double>& wheels) { last_ = wheels; }
   const BaseKinematics& kinematics() const { return *kin_; }
 
  private:
