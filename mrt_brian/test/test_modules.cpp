@@ -195,3 +195,29 @@ TEST(Modules, CustomBehaviorKindThroughTheFacade) {
   // (30*0.08 + 10*0.12 + 0*0.3) / 0.5 = 7.2.
   EXPECT_NEAR(command(b.run({{"Obstacle", 40, 0.5}}), "Speed"), 7.2, 1e-9);
 }
+
+// Where the 2009 engine crashed, loading fails with file:line.
+TEST(Modules, ClearErrorsWhereTheOriginalCrashed) {
+  const fs::path d = make_base("(ObstacleNear) => (Speed STOP);\n");
+  write(d / "cruise.rul", "(ObstacleFar) => (&DEL.Speed ANY) (Speed FAST);\n");
+  BrianOptions legacy;
+  legacy.profile = Profile::kLegacy;
+  try {
+    Brian b(ConfigFiles::from_directory(d.string()), legacy);
+    FAIL() << "no error for &DEL at level 1";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(fs::path(e.file()).filename(), "behavior.txt");
+    EXPECT_EQ(e.line(), 1);
+  }
+  // The manual profile accepts it: there is simply nothing below to delete.
+  EXPECT_NO_THROW(Brian(ConfigFiles::from_directory(d.string())));
+  write(d / "cruise.rul", "(ObstacleFar) => (Speed FAST);\n");
+  write(d / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNear);\nGhost = (P ObstacleNear);\n");
+  try {
+    Brian b(ConfigFiles::from_directory(d.string()), legacy);
+    FAIL() << "no error for a CANDO of an unknown behaviour";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(fs::path(e.file()).filename(), "Cando.ini");
+    EXPECT_EQ(e.line(), 3);
+  }
+}
