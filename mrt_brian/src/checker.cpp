@@ -125,8 +125,9 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
     if (!defined.count(d.name)) defined[d.name] = {1, d.line};
 
   // Checks one expression. `file_index`/`line`: position of the definition
-  // being checked (for forward references), file_index -1 outside the
-  // predicate files.
+  // being checked (for forward references), file_index -1 in rules and
+  // kConditions in CANDO/WANT.
+  constexpr int kConditions = -2;
   std::function<void(const ExprAst&, const std::string&, int, int)> expr =
       [&](const ExprAst& e, const std::string& file, int file_index, int def_line) {
         switch (e.kind) {
@@ -147,6 +148,9 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
             auto it = defined.find(e.name);
             if (it == defined.end()) {
               run.report(file, e.line, "unknown predicate '" + e.name + "'");
+            } else if (file_index == kConditions && it->second.file == 1) {
+              run.report(file, e.line, "predicate action '" + e.name +
+                                           "' in a CANDO/WANT condition, which is evaluated before any predicate action");
             } else if (file_index >= 0 && (it->second.file > file_index ||
                                            (it->second.file == file_index && it->second.line >= def_line))) {
               run.report(file, e.line, "forward reference to predicate '" + e.name + "' (defined at line " +
@@ -175,7 +179,7 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
       if (!level_of.count(d.name))
         run.report(file, d.line, std::string(what) + " for undefined behaviour '" + d.name + "'");
       if (!seen.insert(d.name).second) run.report(file, d.line, std::string(what) + " of '" + d.name + "' defined twice");
-      expr(d.expr, file, -1, 0);
+      expr(d.expr, file, kConditions, 0);
     }
   };
   conditions(cando, f.cando, "CANDO");

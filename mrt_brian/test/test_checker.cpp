@@ -132,6 +132,11 @@ TEST_F(CheckerTest, ForwardReference) {
   expect_one("Predicate.ini", 2, "forward reference to predicate 'ObstacleFar'");
 }
 
+TEST_F(CheckerTest, PredicateActionInCando) {
+  write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (AND (P ObstacleNear)\n  (P GoingFast));\n");
+  expect_one("Cando.ini", 3, "predicate action 'GoingFast' in a CANDO/WANT condition");
+}
+
 TEST_F(CheckerTest, UnknownAction) {
   write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Sped FAST);\n(ObstacleNear) => (Speed SLOW);\n");
   expect_one("behaviors/cruise.rul", 2, "unknown action 'Sped'");
