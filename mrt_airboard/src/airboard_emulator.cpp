@@ -27,6 +27,7 @@ void usage() {
       "  --corrupt-tx-rate P   same for board->PC bytes\n"
       "  --cut-rx-after S      lose every PC->board byte after S s of board time\n"
       "  --seed N              seed of the fault generator (default 1)\n"
+      "  --baud N              carry bytes at the rate of an N-baud 8N1 line (default 0: instantly)\n"
       "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
       "prints its statistics on stderr.\n";
 }
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
       else if (a == "--corrupt-rate") faults.corrupt_rx = std::stod(val());
       else if (a == "--corrupt-tx-rate") faults.corrupt_tx = std::stod(val());
       else if (a == "--cut-rx-after") faults.cut_rx_after = std::stod(val());
+      else if (a == "--baud") faults.baud = std::stoi(val());
       else if (a == "--seed") faults.seed = static_cast<uint32_t>(std::stoul(val()));
       else if (a == "-h" || a == "--help") { usage(); return 0; }
       else throw std::invalid_argument("unknown option " + a);

@@ -1,5 +1,6 @@
 #include "mrt_airboard/pty_emulator.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -15,6 +16,9 @@ namespace mrt::airboard {
 
 PtyEmulator::PtyEmulator(const FirmwareConfig& fw, const LineFaults& faults, std::string link_path)
     : fw_(fw), faults_(faults), link_path_(std::move(link_path)), rng_(faults.seed) {
+  if (faults_.baud < 0) throw std::runtime_error("baud must be >= 0");
+  if (faults_.baud > 0)
+    byte_time_ = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(10.0 / faults_.baud));
   char name[256] = {0};
   termios t{};
   cfmakeraw(&t);
@@ -68,13 +72,10 @@ void PtyEmulator::corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count) 
     }
 }
 
-void PtyEmulator::flush() {
-  std::vector<uint8_t> out = fw_.take_output();
-  if (out.empty()) return;
-  corrupt(out.data(), out.size(), faults_.corrupt_tx, &stats_.bytes_corrupted_out);
+void PtyEmulator::write_out(const uint8_t* d, std::size_t n) {
   std::size_t done = 0;
-  while (done < out.size()) {
-    const ssize_t k = ::write(master_, out.data() + done, out.size() - done);
+  while (done < n) {
+    const ssize_t k = ::write(master_, d + done, n - done);
     if (k > 0) {
       done += static_cast<std::size_t>(k);
     } else if (k < 0 && errno == EINTR) {
@@ -84,7 +85,30 @@ void PtyEmulator::flush() {
     }
   }
   stats_.bytes_out += done;
-  stats_.bytes_dropped_out += out.size() - done;
+  stats_.bytes_dropped_out += n - done;
+}
+
+void PtyEmulator::flush() {
+  std::vector<uint8_t> out = fw_.take_output();
+  if (out.empty()) return;
+  corrupt(out.data(), out.size(), faults_.corrupt_tx, &stats_.bytes_corrupted_out);
+  if (byte_time_.count() == 0) return write_out(out.data(), out.size());
+  const auto now = Clock::now();
+  for (uint8_t b : out) {
+    tx_free_ = std::max(tx_free_, now) + byte_time_;
+    tx_q_.emplace_back(b, tx_free_);
+  }
+}
+
+void PtyEmulator::deliver(uint8_t* d, std::size_t n) {
+  const bool cut = faults_.cut_rx_after >= 0.0 && fw_.time_ms() >= faults_.cut_rx_after * 1000.0;
+  if (cut) {
+    stats_.bytes_cut_in += n;
+    return;
+  }
+  corrupt(d, n, faults_.corrupt_rx, &stats_.bytes_corrupted_in);
+  fw_.receive(d, n);
+  flush();
 }
 
 bool PtyEmulator::handle_input() {
@@ -92,29 +116,58 @@ bool PtyEmulator::handle_input() {
   const ssize_t n = ::read(master_, buf, sizeof(buf));
   if (n <= 0) return false;
   stats_.bytes_in += static_cast<uint64_t>(n);
-  const bool cut = faults_.cut_rx_after >= 0.0 && fw_.time_ms() >= faults_.cut_rx_after * 1000.0;
-  if (cut) {
-    stats_.bytes_cut_in += static_cast<uint64_t>(n);
+  if (byte_time_.count() == 0) {
+    deliver(buf, static_cast<std::size_t>(n));
     return true;
   }
-  corrupt(buf, static_cast<std::size_t>(n), faults_.corrupt_rx, &stats_.bytes_corrupted_in);
-  fw_.receive(buf, static_cast<std::size_t>(n));
-  flush();
+  // The PC's UART sends the bytes one after the other at the line rate.
+  const auto now = Clock::now();
+  for (ssize_t i = 0; i < n; ++i) {
+    rx_free_ = std::max(rx_free_, now) + byte_time_;
+    rx_q_.emplace_back(buf[i], rx_free_);
+  }
   return true;
 }
 
+void PtyEmulator::service_line(Clock::time_point now) {
+  uint8_t buf[512];
+  std::size_t k = 0;
+  while (!rx_q_.empty() && rx_q_.front().second <= now) {
+    buf[k++] = rx_q_.front().first;
+    rx_q_.pop_front();
+    if (k == sizeof(buf)) {
+      deliver(buf, k);
+      k = 0;
+    }
+  }
+  if (k) deliver(buf, k);
+  k = 0;
+  while (!tx_q_.empty() && tx_q_.front().second <= now) {
+    buf[k++] = tx_q_.front().first;
+    tx_q_.pop_front();
+    if (k == sizeof(buf)) {
+      write_out(buf, k);
+      k = 0;
+    }
+  }
+  if (k) write_out(buf, k);
+}
+
 void PtyEmulator::run(const std::atomic<bool>& stop) {
-  using clock = std::chrono::steady_clock;
   const auto period = std::chrono::microseconds(1000000 / fw_.config().control_hz);
   // A real board never stalls; this process can (a loaded machine). Up to
   // kMaxCatchUp late periods are caught up; beyond that board time pauses,
   // so a stall of the emulator is not seen by the firmware as a silent PC.
   constexpr int kMaxCatchUp = 20;
-  auto next = clock::now() + period;
+  auto next = Clock::now() + period;
   while (!stop.load(std::memory_order_relaxed)) {
-    const auto now = clock::now();
+    auto now = Clock::now();
+    service_line(now);
     if (now < next) {
-      const auto wait = std::chrono::duration_cast<std::chrono::nanoseconds>(next - now);
+      auto wake = next;
+      if (!rx_q_.empty()) wake = std::min(wake, rx_q_.front().second);
+      if (!tx_q_.empty()) wake = std::min(wake, tx_q_.front().second);
+      const auto wait = std::chrono::duration_cast<std::chrono::nanoseconds>(std::max(wake - now, Clock::duration(0)));
       timespec ts{static_cast<time_t>(wait.count() / 1000000000), static_cast<long>(wait.count() % 1000000000)};
       pollfd p{master_, POLLIN, 0};
       if (::ppoll(&p, 1, &ts, nullptr) > 0 && (p.revents & POLLIN)) handle_input();
@@ -123,15 +176,16 @@ void PtyEmulator::run(const std::atomic<bool>& stop) {
     // Control periods are due: first take what the PC sent meanwhile.
     while (handle_input()) {
     }
+    service_line(Clock::now());
     int steps = 0;
-    while (clock::now() >= next && steps < kMaxCatchUp) {
+    while (Clock::now() >= next && steps < kMaxCatchUp) {
       fw_.step();
       next += period;
       if (++steps > 1) ++stats_.late_ticks;
     }
-    if (clock::now() >= next) {
-      stats_.paused_ticks += static_cast<uint64_t>((clock::now() - next) / period);
-      next = clock::now() + period;
+    if (Clock::now() >= next) {
+      stats_.paused_ticks += static_cast<uint64_t>((Clock::now() - next) / period);
+      next = Clock::now() + period;
     }
     flush();
   }

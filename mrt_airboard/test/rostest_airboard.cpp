@@ -33,7 +33,7 @@ class EmulatorProcess {
     pid_ = ::fork();
     if (pid_ == 0) {
       ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive a crashed test
-      ::execl(AIRBOARD_EMULATOR, AIRBOARD_EMULATOR, "--link", link.c_str(), "--motors", "2", "--cpr", "8192",
+      ::execl(AIRBOARD_EMULATOR, AIRBOARD_EMULATOR, "--link", link.c_str(), "--motors", "2", "--cpr", "8192", "--baud", "115200",
               static_cast<char*>(nullptr));
       ::_exit(127);
     }

@@ -59,6 +59,29 @@ TEST(PtyEmulator, ServesTheProtocolOnAPseudoTerminal) {
   EXPECT_NE(::access(link.c_str(), F_OK), 0);  // the symlink is gone
 }
 
+TEST(PtyEmulator, CarriesBytesAtTheBaudRate) {
+  const std::string link = "/tmp/mrt_airboard_gtest_baud_" + std::to_string(::getpid());
+  std::atomic<bool> stop{false};
+  FirmwareConfig c;
+  c.motors = 3;
+  LineFaults faults;
+  faults.baud = 115200;
+  PtyEmulator emu(c, faults, link);
+  std::thread t([&] { emu.run(stop); });
+  SerialPort port;
+  port.open(link, 115200);
+  FrameDecoder dec;
+  const auto f = encode_frame(make_set_speed(4, {1.0, 2.0, 3.0}));  // 19 bytes
+  const auto t0 = std::chrono::steady_clock::now();
+  port.write(f.data(), f.size());
+  EXPECT_TRUE(read_until(port, dec, 1000, [&](const Frame& fr) { return fr.type == proto::kState && fr.seq == 4; }));
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  // 19 + 58 + 6 = 83 bytes of 10 bits at 115200 baud: at least 7.2 ms.
+  EXPECT_GE(ms, 7.2);
+  stop = true;
+  t.join();
+}
+
 TEST(SerialPort, ReportsTheDeviceGoingAway) {
   const std::string link = "/tmp/mrt_airboard_gtest_hup_" + std::to_string(::getpid());
   auto emu = std::make_unique<PtyEmulator>(FirmwareConfig{}, LineFaults{}, link);

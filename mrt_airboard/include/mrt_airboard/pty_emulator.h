@@ -3,6 +3,8 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
+#include <deque>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -17,6 +19,7 @@ struct LineFaults {
   double corrupt_tx = 0.0;    // same, board -> PC
   double cut_rx_after = -1.0; // s of board time after which PC -> board bytes are lost (< 0: never)
   uint32_t seed = 1;
+  int baud = 0;               // > 0: bytes cross the line at baud / 10 per second (8N1); 0: instantly
 };
 
 struct EmulatorStats {
@@ -47,8 +50,12 @@ class PtyEmulator {
   const EmulatorStats& stats() const { return stats_; }
 
  private:
+  using Clock = std::chrono::steady_clock;
   void flush();
   bool handle_input();  // one non-blocking read; false when nothing was read
+  void deliver(uint8_t* d, std::size_t n);
+  void write_out(const uint8_t* d, std::size_t n);
+  void service_line(Clock::time_point now);  // moves throttled bytes whose time has come
   void corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count);
 
   Firmware fw_;
@@ -59,6 +66,9 @@ class PtyEmulator {
   int slave_ = -1;
   std::mt19937 rng_;
   EmulatorStats stats_;
+  Clock::duration byte_time_{0};
+  std::deque<std::pair<uint8_t, Clock::time_point>> rx_q_, tx_q_;
+  Clock::time_point rx_free_{}, tx_free_{};
 };
 
 }  // namespace mrt::airboard
