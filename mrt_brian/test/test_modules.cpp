@@ -3,6 +3,8 @@
 // (predicate actions, &DEL of lower levels, threshold, file order).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -38,6 +40,15 @@ fs::path make_base(const std::string& brake_rules) {
   write(d / "s_ftoc.txt", "(Speed SPD)\n");
   return d;
 }
+
+// Removes the rule bases written by make_base when the tests end.
+class TempCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    fs::remove_all(fs::temp_directory_path() / ("brian_modules_" + std::to_string(::getpid())));
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new TempCleanup);
 
 double command(const CommandList& c, const std::string& name) {
   for (const auto& x : c)
