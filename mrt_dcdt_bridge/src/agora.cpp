@@ -255,6 +255,16 @@ void Agora::AddChannel(std::unique_ptr<Channel> c) {
   for (auto& d : dead) d->Stop();
 }
 
+bool Agora::HasConnectedPeer(int id) {
+  std::lock_guard<std::mutex> l(channels_mutex_);
+  for (auto& c : channels_) {
+    if (c->Dead()) continue;
+    auto s = c->Stats();
+    if (s.connected && s.peer_agora == id) return true;
+  }
+  return false;
+}
+
 AgoraStats Agora::Stats() {
   AgoraStats s;
   s.routed = routed_;

@@ -94,11 +94,20 @@ void Finder::Loop() {
       if (r > 0 && DecodeDatagram(buf.data(), static_cast<size_t>(r), &f) && f.kind == FrameKind::BEACON &&
           DecodeBeaconBody(f.body, &b) && b.agora_id != me.agora_id && b.host_key != host_key_) {
         bool dial = false;
+        const auto now = Clock::now();
         {
           std::lock_guard<std::mutex> l(mutex_);
-          seen_[b.agora_id] = Clock::now();
-          // The Agora with the smaller id dials; the other accepts.
-          if (me.agora_id < b.agora_id && !dialled_[b.agora_id] && b.tcp_port != 0) dial = dialled_[b.agora_id] = true;
+          seen_[b.agora_id] = now;
+          // The Agora with the smaller id dials; the other accepts. It dials
+          // again when the connection is gone (the peer restarted), at most
+          // once a second.
+          auto it = last_dial_.find(b.agora_id);
+          if (me.agora_id < b.agora_id && b.tcp_port != 0 &&
+              (it == last_dial_.end() || now - it->second > std::chrono::seconds(1)) &&
+              !agora_->HasConnectedPeer(b.agora_id)) {
+            last_dial_[b.agora_id] = now;
+            dial = true;
+          }
         }
         if (dial) {
           auto ch = MakeDialledTcpChannel(b.tcp_addr, b.tcp_port, agora_->options().channel, rx);

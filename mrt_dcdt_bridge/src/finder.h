@@ -37,7 +37,7 @@ class Finder {
   std::thread thread_;
   std::mutex mutex_;
   std::map<int, std::chrono::steady_clock::time_point> seen_;
-  std::map<int, bool> dialled_;
+  std::map<int, std::chrono::steady_clock::time_point> last_dial_;
 };
 
 }  // namespace mrt::dcdt

@@ -276,6 +276,23 @@ TEST(Integration, FinderDiscoversAgorasByMulticastOnLoopback) {
   for (auto& l : recv) EXPECT_EQ(Field(l, "scope"), "remote");  // Finder channels are links
 }
 
+TEST(Integration, FinderReconnectsToAnAgoraThatRestarted) {
+  const std::string da = TempDir("fra"), db = TempDir("frb");
+  const int port = FreePort();
+  WriteFile(da + "/f.cfg", NetLine(port));
+  const std::string id_a = std::to_string(1000000 + ::getpid() * 2), id_b = std::to_string(1000001 + ::getpid() * 2);
+  // A (smaller id, the dialling side) publishes for a long time.
+  auto a = Agora({"--config", da + "/f.cfg", "--inner-dir", da, "--id", id_a, "--publish", "23", "--count", "100000",
+                  "--rate", "50", "--duration", "30", "--out", da + "/a.txt"});
+  for (int round = 0; round < 2; ++round) {
+    const std::string out = db + "/b" + std::to_string(round) + ".txt";
+    auto b = Agora({"--config", da + "/f.cfg", "--inner-dir", db, "--id", id_b, "--subscribe", "23", "--expect", "5",
+                    "--duration", "10", "--out", out});
+    EXPECT_EQ(b->Wait(12000), 0) << "round " << round << ":\n" << Slurp(out);
+    EXPECT_EQ(Lines(out, "recv ").size(), 5u);
+  }
+}
+
 TEST(Integration, FinderAcrossNetworkNamespaces) {
   GTEST_SKIP() << "Finder discovery across two network namespaces needs a veth pair with non-loopback "
                   "addresses; this environment allows loopback traffic only. Discovery is tested on "

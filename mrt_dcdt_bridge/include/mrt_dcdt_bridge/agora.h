@@ -79,6 +79,8 @@ class Agora {
   int NextMemberId() { return ++member_counter_; }
   uint64_t NextSeq() { return ++seq_counter_; }
   void AddChannel(std::unique_ptr<Channel> c);
+  /// True when a live channel is connected to Agora `id`.
+  bool HasConnectedPeer(int id);
   void NotifyStateChange();
   /// Called by a Member's destructor.
   void RemoveMember(Member* m);
