@@ -4,9 +4,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <system_error>
 #include <thread>
+#include <vector>
 
 #include "mrt_dcdt_bridge/agora.h"
 #include "mrt_dcdt_bridge/channel.h"
@@ -23,11 +26,26 @@ inline bool WaitFor(const std::function<bool()>& pred, int timeout_ms = 3000) {
   return pred();
 }
 
+/// The temporary directories of this test program, removed when it exits.
+struct TempDirRegistry {
+  std::vector<std::string> dirs;
+  ~TempDirRegistry() {
+    std::error_code ec;
+    for (const auto& d : dirs) std::filesystem::remove_all(d, ec);
+  }
+};
+inline TempDirRegistry& TempDirs() {
+  static TempDirRegistry r;
+  return r;
+}
+
 /// A fresh directory for inner links (one per test, so tests never cross-talk).
 inline std::string TempDir(const std::string& tag) {
   std::string t = "/tmp/dcdt_test_" + tag + "_" + std::to_string(::getpid()) + "_XXXXXX";
   char* p = ::mkdtemp(t.data());
-  return p ? std::string(p) : t;
+  if (!p) return t;
+  TempDirs().dirs.push_back(p);
+  return p;
 }
 
 /// A channel that records what it is asked to send (for routing tests).
