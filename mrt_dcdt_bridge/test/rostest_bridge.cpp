@@ -214,6 +214,5 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "dcdt_bridge_test");
   ros::NodeHandle pnh("~");
   pnh.param<std::string>("inner_dir", g_inner_dir, "/tmp/dcdt_rostest");
-  ros::AsyncSpinner spinner(1);
   return RUN_ALL_TESTS();
 }
