@@ -337,7 +337,9 @@ void Print(const char* name, const Result& r) {
 }  // namespace
 
 int main() {
-  const int kThroughput = 200000, kLatency = 5000;
+  // DCDT_BENCH_MESSAGES overrides the throughput message count (default 200000).
+  const char* env = std::getenv("DCDT_BENCH_MESSAGES");
+  const int kThroughput = env ? std::max(1000, std::atoi(env)) : 200000, kLatency = 5000;
   const std::string small(16, 'x');
 
   Result raw = RawTcp(kThroughput, kLatency);
