@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <random>
@@ -271,12 +272,24 @@ AgoraStats Agora::Stats() {
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
   if (inner_) {
-    s.inner_peers = inner_->Peers();
+    s.peer_ids = inner_->PeerIds();
+    s.inner_peers = static_cast<int>(s.peer_ids.size());
     s.inner_errors = inner_->Errors();
   }
-  if (finder_) s.finder_peers = finder_->Peers();
-  std::lock_guard<std::mutex> l(channels_mutex_);
-  for (auto& c : channels_) s.channels.push_back(c->Stats());
+  if (finder_) {
+    auto f = finder_->PeerIds();
+    s.finder_peers = static_cast<int>(f.size());
+    s.peer_ids.insert(s.peer_ids.end(), f.begin(), f.end());
+  }
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    for (auto& c : channels_) {
+      s.channels.push_back(c->Stats());
+      if (s.channels.back().peer_agora) s.peer_ids.push_back(s.channels.back().peer_agora);
+    }
+  }
+  std::sort(s.peer_ids.begin(), s.peer_ids.end());
+  s.peer_ids.erase(std::unique(s.peer_ids.begin(), s.peer_ids.end()), s.peer_ids.end());
   return s;
 }
 

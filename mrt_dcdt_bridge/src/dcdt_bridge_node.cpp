@@ -169,6 +169,9 @@ class BridgeNode {
     kv("agora_id", std::to_string(agora_->GetAgoraID()));
     kv("inner_peers", std::to_string(a.inner_peers));
     kv("finder_peers", std::to_string(a.finder_peers));
+    std::string ids;
+    for (int id : a.peer_ids) ids += (ids.empty() ? "" : ",") + std::to_string(id);
+    kv("peers_seen", ids);
     kv("channels_connected", std::to_string(connected) + "/" + std::to_string(a.channels.size()));
     for (const auto& [type, n] : b.in) kv("in." + std::to_string(type), std::to_string(n));
     for (const auto& [type, n] : b.out) kv("out." + std::to_string(type), std::to_string(n));

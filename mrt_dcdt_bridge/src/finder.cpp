@@ -69,6 +69,15 @@ int Finder::Peers() {
   return n;
 }
 
+std::vector<int> Finder::PeerIds() {
+  std::lock_guard<std::mutex> l(mutex_);
+  std::vector<int> ids;
+  const auto now = Clock::now();
+  for (auto& [id, t] : seen_)
+    if (now - t < std::chrono::seconds(3)) ids.push_back(id);
+  return ids;
+}
+
 void Finder::Loop() {
   sockaddr_in group;
   net::MakeAddr(cfg_.multicast_addr, cfg_.port, &group);

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "mrt_dcdt_bridge/config.h"
 #include "net_util.h"
@@ -24,6 +25,7 @@ class Finder {
   void Stop();
   /// Agoras heard from during the last 3 s.
   int Peers();
+  std::vector<int> PeerIds();
 
  private:
   void Loop();

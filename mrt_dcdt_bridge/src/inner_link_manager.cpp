@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 
 #include "mrt_dcdt_bridge/frame.h"
@@ -90,6 +91,17 @@ int InnerLinkManager::Peers() {
   RefreshPeers(false);
   std::lock_guard<std::mutex> l(peers_mutex_);
   return static_cast<int>(peers_.size());
+}
+
+std::vector<int> InnerLinkManager::PeerIds() {
+  RefreshPeers(false);
+  std::lock_guard<std::mutex> l(peers_mutex_);
+  std::vector<int> ids;
+  for (const auto& p : peers_) {
+    const auto slash = p.rfind('/');
+    ids.push_back(std::atoi(p.c_str() + slash + 1));
+  }
+  return ids;
 }
 
 void InnerLinkManager::Send(const Msg& msg) {

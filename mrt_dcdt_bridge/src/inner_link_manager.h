@@ -25,6 +25,8 @@ class InnerLinkManager {
   /// Sends msg to every other Agora of the directory.
   void Send(const Msg& msg);
   int Peers();
+  /// Agora ids of the peers (from their socket names).
+  std::vector<int> PeerIds();
   uint64_t Errors() const { return errors_; }
 
  private:

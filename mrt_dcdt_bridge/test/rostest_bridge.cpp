@@ -175,6 +175,7 @@ TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
   std::lock_guard<std::mutex> l(m);
   EXPECT_EQ(value("parse_errors"), "0");
   EXPECT_GT(std::stoi(value("in.18")), 0);
+  EXPECT_FALSE(value("peers_seen").empty());  // at least the legacy vision Agora
 }
 
 TEST(Bridge, MalformedDcdtPayloadIsDroppedCountedAndTheNodeKeepsRunning) {

@@ -160,6 +160,7 @@ TEST(Member, TwoStandaloneAgorasOnOneMachineTalkThroughInnerLinks) {
   std::thread tb([&] { b.LetsWork(); });
   // Wait until each Agora sees the other before producing.
   ASSERT_TRUE(dcdt_test::WaitFor([&] { return a.Stats().inner_peers == 1 && b.Stats().inner_peers == 1; }));
+  EXPECT_EQ(a.Stats().peer_ids, std::vector<int>{b.GetAgoraID()});
   ASSERT_TRUE(dcdt_test::WaitFor([&] { return c.GetState() == MemberState::RUNNING; }));
   std::thread guard([&] {
     for (int i = 0; i < 500 && c.GetState() != MemberState::TERMINATED; ++i)

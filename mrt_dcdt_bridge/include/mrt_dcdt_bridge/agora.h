@@ -38,6 +38,7 @@ struct AgoraStats {
   uint64_t routed = 0, duplicates = 0, hop_limited = 0, inner_errors = 0;
   int inner_peers = 0;
   int finder_peers = 0;
+  std::vector<int> peer_ids;  ///< Agoras seen: inner-link peers, Finder peers, channel peers (sorted, unique)
   std::vector<ChannelStats> channels;
 };
 
