@@ -1,6 +1,6 @@
 // airboard_emulator: the AIRBoard firmware model on a pseudo-terminal.
 // ROS-free; runnable as a plain program or as a <node> in a launch file
-// (arguments starting with "__" are ignored).
+// (ROS arguments of the form name:=value are ignored).
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
@@ -29,7 +29,7 @@ void usage() {
       "  --seed N              seed of the fault generator (default 1)\n"
       "  --baud N              carry bytes at the rate of an N-baud 8N1 line (default 0: instantly)\n"
       "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
-      "prints its statistics on stderr.\n";
+      "prints its statistics on stderr. Arguments name:=value (ROS) are ignored.\n";
 }
 }  // namespace
 
@@ -40,7 +40,9 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a.rfind("__", 0) == 0) continue;  // roslaunch remappings (__name:=, __log:=)
+      // roslaunch adds __name:=, __log:= and the remappings (from:=to) of
+      // the enclosing group: not ours.
+      if (a.find(":=") != std::string::npos) continue;
       auto val = [&]() -> std::string {
         if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value");
         return argv[++i];
