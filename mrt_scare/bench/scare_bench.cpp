@@ -1,0 +1,48 @@
+// scare_bench: sequencer update cost and Roby closed-loop speed, printed as
+// `name: value unit`, with an in-run baseline ratio (scripts/bench.sh).
+#include <chrono>
+#include <cstdio>
+
+#include "mrt_scare/roby_loop.h"
+#include "mrt_scare/sequencer.h"
+
+using Clock = std::chrono::steady_clock;
+
+int main() {
+  using namespace mrt::scare;
+  // Sequencer: a 1000-point plan driven through by a pose on the points.
+  std::vector<Point2D> plan;
+  for (int i = 0; i < 1000; ++i) plan.push_back({static_cast<double>(i), 0.0});
+  Sequencer s;
+  s.set_plan(plan, 0.0, Pose2D(-1, 0, 0));
+  const int n = 2000000;
+  auto t0 = Clock::now();
+  std::size_t events = 0;
+  for (int k = 0; k < n; ++k) {
+    const double x = static_cast<double>(k) * 1000.0 / n;
+    events += s.update(k * 1e-3, Pose2D(x, 0, 0)).size();
+  }
+  const double seq_ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n;
+  // Baseline: the distance computation alone, same loop.
+  t0 = Clock::now();
+  double acc = 0.0;
+  for (int k = 0; k < n; ++k) acc += distance(Pose2D(k * 1e-3, 0, 0), plan[k % plan.size()]);
+  const double base_ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n;
+  std::printf("sequencer_update: %.1f ns\n", seq_ns);
+  std::printf("sequencer_update_over_distance_baseline: %.1f ratio\n", seq_ns / base_ns);
+  std::printf("sequencer_events: %zu count\n", events + (acc < 0 ? 1 : 0));
+
+  RobyLoopOptions o;
+  const std::string root = MRT_SCARE_ROOT;
+  o.world = root + "/mrt_scare/test/data/roby_route.yaml";
+  o.map = root + "/mrt_scare/test/data/roby_route_map.yaml";
+  o.tasks = root + "/config/roby/tasks.yaml";
+  o.brian = root + "/config/roby/brian";
+  t0 = Clock::now();
+  const auto r = run_roby_loop(o);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("roby_loop_sim_seconds: %.1f s\n", r.time);
+  std::printf("roby_loop_real_time_factor: %.1f ratio\n", r.time / wall);
+  std::printf("roby_loop_min_clearance: %.3f m\n", r.min_clearance);
+  return 0;
+}

@@ -1,0 +1,93 @@
+// The SCARE sequencer: activates, monitors and terminates the tasks of a
+// plan and handles their exceptions (manual ch. 11; Roby, §2.3.1). ROS-free.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mrt_scare/task.h"
+
+namespace mrt::scare {
+
+/// Auto / Manual (the Status flag of manual §10.4.10).
+enum class Mode { kAuto, kManual };
+const char* to_string(Mode m);
+
+struct SequencerOptions {
+  TaskSpec path_task = TaskSpec::reach_path_point(0.5, 30.0, 0.0);
+  /// Consecutive aborted plans after which the sequencer gives up (0 = never).
+  int max_replans = 5;
+  /// In Manual mode the active task is suspended (its timeout clock stops).
+  bool suspend_in_manual = true;
+};
+
+enum class SequencerState { kIdle, kRunning, kWaitingForPlan, kDone, kGaveUp };
+const char* to_string(SequencerState s);
+
+struct SequencerEvent {
+  enum class Type {
+    kPlanAccepted,     // a new plan replaced the old one
+    kTaskStarted,      // index, point
+    kTaskSucceeded,    // index, point
+    kTaskFailed,       // index, point (the timeout expired)
+    kPlanAborted,      // the whole plan was aborted
+    kReplanRequested,  // pose: re-plan from here; index/point: the failed one
+    kRouteCompleted,   // every path point reached
+    kGaveUp,           // max_replans consecutive failures
+    kModeChanged,
+  };
+  Type type;
+  double time = 0.0;
+  std::size_t index = 0;
+  Point2D point;
+  Pose2D pose;
+};
+const char* to_string(SequencerEvent::Type t);
+
+class Sequencer {
+ public:
+  explicit Sequencer(SequencerOptions options = {});
+
+  /// A plan from the planner: the ordered path points. An empty plan stops
+  /// the robot (Idle). Replaces any running plan.
+  std::vector<SequencerEvent> set_plan(const std::vector<Point2D>& points, double now,
+                                       const Pose2D& pose);
+  /// Monitors the active task with the current pose.
+  std::vector<SequencerEvent> update(double now, const Pose2D& pose);
+  std::vector<SequencerEvent> set_mode(Mode mode, double now);
+
+  SequencerState state() const { return state_; }
+  Mode mode() const { return mode_; }
+  /// The active task, if any.
+  const Task* active() const { return task_ ? &*task_ : nullptr; }
+  const std::vector<Point2D>& plan() const { return plan_; }
+  std::size_t reached() const { return reached_; }
+  std::size_t failed() const { return failed_; }
+  std::size_t replans() const { return replans_; }
+  std::size_t plans() const { return plans_; }
+  const SequencerOptions& options() const { return options_; }
+
+ private:
+  void start_task(std::size_t index, double now, const Pose2D& pose,
+                  std::vector<SequencerEvent>& ev);
+
+  SequencerOptions options_;
+  SequencerState state_ = SequencerState::kIdle;
+  Mode mode_ = Mode::kAuto;
+  std::vector<Point2D> plan_;
+  std::optional<Task> task_;
+  std::size_t reached_ = 0, failed_ = 0, replans_ = 0, plans_ = 0;
+  int consecutive_aborts_ = 0;
+};
+
+/// The goal as crisp data for the rule base: distance in cm and bearing in
+/// degrees in (-180, 180], 0 ahead, counter-clockwise positive.
+struct GoalCrisp {
+  double distance_cm = 0.0;
+  double bearing_deg = 0.0;
+};
+GoalCrisp goal_crisp(const Pose2D& pose, const Point2D& goal);
+
+}  // namespace mrt::scare

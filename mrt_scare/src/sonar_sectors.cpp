@@ -1,0 +1,51 @@
+#include "mrt_scare/sonar_sectors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "mrt_common/angle.h"
+
+namespace mrt::scare {
+
+std::vector<Sector> default_sectors() {
+  return {{"ObstacleFront", -25.0, 25.0},
+          {"ObstacleFrontLeft", 25.0, 70.0},
+          {"ObstacleFrontRight", -70.0, -25.0},
+          {"ObstacleLeft", 70.0, 115.0},
+          {"ObstacleRight", -115.0, -70.0}};
+}
+
+std::vector<double> even_mounts_deg(std::size_t count) {
+  std::vector<double> m;
+  for (std::size_t i = 0; i < count; ++i) m.push_back(360.0 * static_cast<double>(i) / count);
+  return m;
+}
+
+SonarSectors::SonarSectors(std::vector<double> mount_deg, std::vector<Sector> sectors,
+                           double max_range)
+    : sectors_(std::move(sectors)), ranges_(mount_deg.size(), max_range),
+      members_(sectors_.size()), max_range_(max_range) {
+  if (!(max_range > 0.0)) throw std::invalid_argument("max_range must be > 0");
+  for (std::size_t i = 0; i < mount_deg.size(); ++i) {
+    // Beam axis in (-180, 180].
+    const double a = common::rad_to_deg(common::normalize_angle(common::deg_to_rad(mount_deg[i])));
+    for (std::size_t s = 0; s < sectors_.size(); ++s)
+      if (a >= sectors_[s].from_deg - 1e-9 && a <= sectors_[s].to_deg + 1e-9) members_[s].push_back(i);
+  }
+}
+
+bool SonarSectors::set_range(std::size_t sonar, double range_m) {
+  if (sonar >= ranges_.size() || !std::isfinite(range_m) || range_m < 0.0) return false;
+  ranges_[sonar] = std::min(range_m, max_range_);
+  return true;
+}
+
+std::vector<double> SonarSectors::distances() const {
+  std::vector<double> d(sectors_.size(), max_range_);
+  for (std::size_t s = 0; s < sectors_.size(); ++s)
+    for (std::size_t i : members_[s]) d[s] = std::min(d[s], ranges_[i]);
+  return d;
+}
+
+}  // namespace mrt::scare

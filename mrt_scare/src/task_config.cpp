@@ -1,0 +1,85 @@
+#include "mrt_scare/task_config.h"
+
+#include <map>
+
+#include "yaml_util.h"
+
+namespace mrt::scare {
+
+namespace {
+
+using detail::YamlReader;
+
+std::shared_ptr<const Condition> parse_condition(const YamlReader& r, const YAML::Node& n,
+                                                 const std::string& what) {
+  r.map(n, what, {"within", "timeout", "per_metre"});
+  if (n["within"]) {
+    if (n.size() != 1) r.fail(n, "'within' takes no other key in '" + what + "'");
+    return std::make_shared<WithinDistance>(r.positive(n["within"], "within"));
+  }
+  if (n["timeout"]) {
+    const double per = n["per_metre"] ? r.non_negative(n["per_metre"], "per_metre") : 0.0;
+    return std::make_shared<Timeout>(r.positive(n["timeout"], "timeout"), per);
+  }
+  r.fail(n, "expected 'within' or 'timeout' in '" + what + "'");
+}
+
+TaskSpec parse_task(const YamlReader& r, const YAML::Node& n, const std::string& name) {
+  r.map(n, name, {"success", "failure", "on_failure"});
+  TaskSpec t;
+  t.name = name;
+  for (const char* key : {"success", "failure"}) {
+    const YAML::Node list = n[key];
+    if (!list) r.fail(n, "missing key '" + std::string(key) + "' in '" + name + "'");
+    if (!list.IsSequence() || list.size() == 0)
+      r.fail(list, "expected a non-empty list of conditions for '" + std::string(key) + "'");
+    for (const auto& c : list)
+      (std::string(key) == "success" ? t.success : t.failure)
+          .push_back(parse_condition(r, c, name + "." + key));
+  }
+  if (n["on_failure"]) {
+    const std::string s = r.string(n["on_failure"], "on_failure");
+    if (s == "abort_and_replan") t.on_failure = OnFailure::kAbortAndReplan;
+    else if (s == "skip") t.on_failure = OnFailure::kSkip;
+    else r.fail(n["on_failure"], "unknown on_failure '" + s + "' (expected abort_and_replan or skip)");
+  }
+  return t;
+}
+
+}  // namespace
+
+SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std::string& file) {
+  const YamlReader r(file);
+  const YAML::Node root = r.load(yaml_text);
+  if (!root.IsMap()) throw common::ParseError(file, 1, 1, "expected a map at the top level");
+  r.map(root, "top level", {"tasks", "path_task", "max_replans", "suspend_in_manual"});
+  if (!root["tasks"]) r.fail(root, "missing key 'tasks'");
+  r.map(root["tasks"], "tasks", {"ReachPathPoint"});
+  std::map<std::string, TaskSpec> tasks;
+  for (auto it = root["tasks"].begin(); it != root["tasks"].end(); ++it) {
+    const std::string name = it->first.Scalar();
+    tasks[name] = parse_task(r, it->second, name);
+  }
+  SequencerOptions o;
+  std::string path_task = "ReachPathPoint";
+  if (root["path_task"]) path_task = r.string(root["path_task"], "path_task");
+  if (!tasks.count(path_task))
+    r.fail(root["path_task"] ? root["path_task"] : root["tasks"],
+           "path task '" + path_task + "' is not defined under 'tasks'");
+  o.path_task = tasks[path_task];
+  if (root["max_replans"]) {
+    const double m = r.non_negative(root["max_replans"], "max_replans");
+    if (m != static_cast<int>(m) || m > 1000)
+      r.fail(root["max_replans"], "expected an integer 0..1000 for 'max_replans'");
+    o.max_replans = static_cast<int>(m);
+  }
+  if (root["suspend_in_manual"])
+    o.suspend_in_manual = r.boolean(root["suspend_in_manual"], "suspend_in_manual");
+  return o;
+}
+
+SequencerOptions load_sequencer_options(const std::string& path) {
+  return parse_sequencer_options(detail::read_file(path), path);
+}
+
+}  // namespace mrt::scare

@@ -1,0 +1,164 @@
+// Task files, road maps, sonar sectors, crisp data and the DGPS localizer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mrt_common/parse_error.h"
+#include "mrt_scare/crisp_builder.h"
+#include "mrt_scare/dgps_localizer.h"
+#include "mrt_scare/route_planner.h"
+#include "mrt_scare/sonar_sectors.h"
+#include "mrt_scare/task_config.h"
+
+using namespace mrt::scare;
+using mrt::common::ParseError;
+
+namespace {
+void expect_error(const std::string& yaml, int line, int col, const std::string& part) {
+  try {
+    parse_sequencer_options(yaml, "t.yaml");
+    FAIL() << "no error for\n" << yaml;
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "t.yaml");
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_EQ(e.column(), col) << e.what();
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(TaskConfig, ParsesReachPathPoint) {
+  const auto o = parse_sequencer_options(
+      "tasks:\n"
+      "  ReachPathPoint:\n"
+      "    success:\n"
+      "      - within: 0.6\n"
+      "    failure:\n"
+      "      - timeout: 20\n"
+      "        per_metre: 2.5\n"
+      "    on_failure: abort_and_replan\n"
+      "max_replans: 3\n"
+      "suspend_in_manual: false\n",
+      "t.yaml");
+  EXPECT_EQ(o.path_task.name, "ReachPathPoint");
+  ASSERT_EQ(o.path_task.success.size(), 1u);
+  EXPECT_EQ(o.path_task.success[0]->describe(), "within 0.6 m");
+  EXPECT_DOUBLE_EQ(o.path_task.timeout_limit(4.0), 30.0);
+  EXPECT_EQ(o.max_replans, 3);
+  EXPECT_FALSE(o.suspend_in_manual);
+  EXPECT_EQ(o.path_task.on_failure, OnFailure::kAbortAndReplan);
+}
+
+TEST(TaskConfig, ShippedFileLoads) {
+  const auto o = load_sequencer_options(MRT_SCARE_CONFIG "/tasks.yaml");
+  EXPECT_GT(o.path_task.timeout_limit(0.0), 0.0);
+}
+
+TEST(TaskConfig, ErrorsNameLineAndColumn) {
+  expect_error("tasks:\n  ReachPathPoint:\n    success: [{within: 0.5}]\n    failur: []\n", 4, 5,
+               "unknown key 'failur'");
+  expect_error("tasks:\n  ReachPathPoint:\n    success: [{within: -1}]\n    failure: [{timeout: 5}]\n",
+               3, 24, "'within' > 0");
+  expect_error("tasks:\n  ReachPathPoint:\n    success: [{within: 0.5}]\n", 3, 5, "missing key 'failure'");
+  expect_error("tasks:\n  ReachPathPoint:\n    success: [{within: 0.5}]\n    failure: [{timeout: 5}]\n"
+               "    on_failure: retry\n", 5, 17, "unknown on_failure");
+  expect_error("tasks: {ReachPathPoint: {success: [{within: 1}], failure: [{timeout: x}]}}\n", 1, 70,
+               "expected a number");
+  expect_error("tasks: [\n", 2, 1, "");
+  EXPECT_THROW(load_sequencer_options("/nonexistent/tasks.yaml"), ParseError);
+  EXPECT_THROW(load_sequencer_options("/tmp"), ParseError);
+}
+
+TEST(RoadMap, ParsesAndPlans) {
+  RoadMap m = parse_road_map(
+      "frame: world\nclearance: 0.5\nbuildings:\n  - {name: A, box: [2, 1, 4, 3]}\n"
+      "route: [[5, 0], [5, 5]]\n",
+      "m.yaml");
+  ASSERT_EQ(m.buildings.size(), 1u);
+  RoutePlanner p(m);
+  auto r = p.plan({0, 0});
+  ASSERT_EQ(r.size(), 2u);
+  // A leg through the building is refused.
+  RoutePlanner bad(parse_road_map("buildings: [{name: A, box: [2, -1, 4, 1]}]\nroute: [[5, 0]]\n", "m"));
+  EXPECT_THROW(bad.plan({0, 0}), std::invalid_argument);
+  // Re-planning after point 0 failed: from the current pose through the rest.
+  r = p.replan({4.5, 0.2}, {5.0, 0.1});
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_DOUBLE_EQ(r[0].y, 5.0);
+  EXPECT_TRUE(p.unreachable()[0]);
+  try {
+    parse_road_map("route: [[1, 2, 3]]\n", "m.yaml");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.column(), 9);
+  }
+}
+
+TEST(RoadMap, SegmentRectangleDistance) {
+  Building b{"b", 0, 0, 2, 2};
+  EXPECT_DOUBLE_EQ(segment_rect_distance({-1, 3}, {3, 3}, b), 1.0);   // parallel above
+  EXPECT_DOUBLE_EQ(segment_rect_distance({-1, -1}, {3, 3}, b), 0.0);  // crossing
+  EXPECT_NEAR(segment_rect_distance({3, 3}, {4, 4}, b), std::sqrt(2.0), 1e-12);  // corner
+}
+
+TEST(SonarSectors, MinimumPerSector) {
+  // 16 sonars every 22.5 deg: front = 0, +-22.5; front-left = 45, 67.5.
+  SonarSectors s(even_mounts_deg(16), default_sectors(), 5.0);
+  ASSERT_EQ(s.members()[0].size(), 3u);
+  ASSERT_EQ(s.members()[1].size(), 2u);
+  ASSERT_EQ(s.members()[3].size(), 2u);  // left: 90, 112.5
+  auto d = s.distances();
+  for (double v : d) EXPECT_DOUBLE_EQ(v, 5.0);
+  EXPECT_TRUE(s.set_range(15, 1.2));  // -22.5 deg: front
+  EXPECT_TRUE(s.set_range(2, 0.7));   // 45 deg: front-left
+  EXPECT_FALSE(s.set_range(3, NAN));
+  EXPECT_FALSE(s.set_range(99, 1.0));
+  d = s.distances();
+  EXPECT_DOUBLE_EQ(d[0], 1.2);
+  EXPECT_DOUBLE_EQ(d[1], 0.7);
+  EXPECT_DOUBLE_EQ(d[2], 5.0);
+}
+
+TEST(CrispBuilder, RuleBaseUnits) {
+  CrispInputs in;
+  in.goal = GoalCrisp{250.0, -30.0};
+  in.mode = Mode::kManual;
+  in.sector_names = {"ObstacleFront", "ObstacleFrontLeft", "ObstacleFrontRight", "ObstacleLeft",
+                     "ObstacleRight"};
+  in.sector_distances = {1.0, 0.8, 2.0, 3.0, 1.5};
+  in.remote = RemoteCommand{0.3, -M_PI / 6};
+  in.last_jog_deg = 12.0;
+  const auto c = build_crisp(in);
+  auto get = [&](const std::string& n) -> double {
+    for (const auto& x : c)
+      if (x.name == n) return x.value;
+    ADD_FAILURE() << n;
+    return NAN;
+  };
+  EXPECT_EQ(get("Status"), 0.0);
+  EXPECT_EQ(get("HaveGoal"), 1.0);
+  EXPECT_EQ(get("GoalDistance"), 250.0);
+  EXPECT_EQ(get("GoalBearing"), -30.0);
+  EXPECT_DOUBLE_EQ(get("ObstacleFrontLeft"), 80.0);
+  EXPECT_DOUBLE_EQ(get("FreeSide"), 80.0 - 150.0);
+  EXPECT_DOUBLE_EQ(get("RemoteSpeed"), 30.0);
+  EXPECT_NEAR(get("RemoteTurn"), -30.0, 1e-12);
+  EXPECT_EQ(get("LastJog"), 12.0);
+}
+
+TEST(DgpsLocalizer, CorrectsPositionAndHeading) {
+  // Odometry believes the heading is 0.2 rad off; driving straight along x
+  // with exact fixes pulls the heading back.
+  DgpsLocalizer l(mrt::common::Pose2D(0, 0, 0.2));
+  double x = 0.0;
+  for (int k = 0; k < 30; ++k) {
+    for (int i = 0; i < 50; ++i) l.predict(0.5, 0.0, 0.02);  // 0.5 m per second
+    x += 0.5 * 1.0;
+    l.correct(x, 0.0);
+  }
+  EXPECT_NEAR(l.pose().theta, 0.0, 0.02);
+  EXPECT_NEAR(l.pose().x, x, 0.05);
+  EXPECT_NEAR(l.pose().y, 0.0, 0.05);
+  EXPECT_EQ(l.fixes(), 30);
+}
