@@ -2,6 +2,7 @@
 // deadline, kill only what we started (by pid).
 #pragma once
 
+#include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/socket.h>
@@ -23,11 +24,20 @@ namespace dcdt_test {
 
 class Process {
  public:
-  explicit Process(const std::vector<std::string>& args) {
+  /// Starts args[0] (a path) with args; with `output`, the child's stdout and
+  /// stderr go to that file (created or truncated).
+  explicit Process(const std::vector<std::string>& args, const std::string& output = "") {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    if (posix_spawn(&pid_, argv[0], nullptr, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    if (!output.empty()) {
+      posix_spawn_file_actions_addopen(&fa, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      posix_spawn_file_actions_adddup2(&fa, 1, 2);
+    }
+    if (posix_spawn(&pid_, argv[0], &fa, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&fa);
   }
   ~Process() { Kill(); }
   Process(const Process&) = delete;

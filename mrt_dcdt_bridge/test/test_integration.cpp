@@ -1,6 +1,7 @@
 // Integration tests with separate dcdt_agora processes on loopback: inner
 // links, link vs bridge between two communities, a cycle that must not loop,
-// a guaranteed TCP link killed and restarted mid-stream, Finder discovery.
+// a guaranteed TCP link killed and restarted mid-stream, Finder discovery on
+// loopback and across two network namespaces joined by a veth pair.
 #include <gtest/gtest.h>
 
 #include <poll.h>
@@ -293,10 +294,150 @@ TEST(Integration, FinderReconnectsToAnAgoraThatRestarted) {
   }
 }
 
+// Two network namespaces joined by a veth pair, created (and always deleted)
+// by the test itself: the only non-loopback addresses any test talks to.
+class NetnsPair {
+ public:
+  static constexpr const char* kAddrA = "10.213.0.1";
+  static constexpr const char* kAddrB = "10.213.0.2";
+
+  NetnsPair() {
+    for (const char* p : {"/usr/sbin/ip", "/sbin/ip", "/usr/bin/ip", "/bin/ip"})
+      if (::access(p, X_OK) == 0) {
+        ip_ = p;
+        break;
+      }
+    const std::string pid = std::to_string(::getpid());
+    ns_a_ = "dcdt_test_" + pid + "_a";
+    ns_b_ = "dcdt_test_" + pid + "_b";
+    veth_a_ = "dcdtv" + pid + "a";  // interface names: at most 15 characters
+    veth_b_ = "dcdtv" + pid + "b";
+    dir_ = TempDir("netns");
+  }
+  ~NetnsPair() {
+    // Deleting a namespace destroys the veth end inside it (and so the pair).
+    if (ns_a_created_) Ip({"netns", "del", ns_a_});
+    if (ns_b_created_) Ip({"netns", "del", ns_b_});
+    if (veth_in_root_) Ip({"link", "del", veth_a_});
+  }
+  NetnsPair(const NetnsPair&) = delete;
+  NetnsPair& operator=(const NetnsPair&) = delete;
+
+  const std::string& ip() const { return ip_; }
+  const std::string& dir() const { return dir_; }
+  const std::string& ns_a() const { return ns_a_; }
+  const std::string& ns_b() const { return ns_b_; }
+
+  /// Creates the two namespaces; "" on success, else why not (then skip).
+  std::string CreateNamespaces() {
+    if (ip_.empty()) return "iproute2's `ip` was not found";
+    std::string out;
+    if (!Ip({"netns", "add", ns_a_}, &out)) return "`ip netns add " + ns_a_ + "` failed: " + out;
+    ns_a_created_ = true;
+    if (!Ip({"netns", "add", ns_b_}, &out)) return "`ip netns add " + ns_b_ + "` failed: " + out;
+    ns_b_created_ = true;
+    return "";
+  }
+
+  /// veth pair, addresses, links up (lo too), multicast routes; "" on success.
+  std::string Wire() {
+    std::string out;
+    if (!Ip({"link", "add", veth_a_, "type", "veth", "peer", "name", veth_b_}, &out))
+      return "ip link add (veth): " + out;
+    veth_in_root_ = true;
+    if (!Ip({"link", "set", veth_a_, "netns", ns_a_}, &out)) return "ip link set netns: " + out;
+    veth_in_root_ = false;
+    if (!Ip({"link", "set", veth_b_, "netns", ns_b_}, &out)) return "ip link set netns: " + out;
+    const std::vector<std::vector<std::string>> cmds = {
+        {"-n", ns_a_, "addr", "add", std::string(kAddrA) + "/24", "dev", veth_a_},
+        {"-n", ns_b_, "addr", "add", std::string(kAddrB) + "/24", "dev", veth_b_},
+        {"-n", ns_a_, "link", "set", "lo", "up"},
+        {"-n", ns_b_, "link", "set", "lo", "up"},
+        {"-n", ns_a_, "link", "set", veth_a_, "up"},
+        {"-n", ns_b_, "link", "set", veth_b_, "up"},
+        {"-n", ns_a_, "route", "add", "224.0.0.0/4", "dev", veth_a_},
+        {"-n", ns_b_, "route", "add", "224.0.0.0/4", "dev", veth_b_},
+    };
+    for (const auto& c : cmds) {
+      if (!Ip(c, &out)) {
+        std::string line = "ip";
+        for (const auto& a : c) line += " " + a;
+        return line + ": " + out;
+      }
+    }
+    return "";
+  }
+
+  /// dcdt_agora with args, inside namespace ns.
+  std::unique_ptr<Process> AgoraIn(const std::string& ns, std::vector<std::string> args) const {
+    args.insert(args.begin(), {ip_, "netns", "exec", ns, kAgora});
+    return std::make_unique<Process>(args);
+  }
+
+ private:
+  // Runs `ip args` (at most 2 s); its output (stdout + stderr) in *out.
+  bool Ip(std::vector<std::string> args, std::string* out = nullptr) const {
+    const std::string log = dir_ + "/ip.log";
+    args.insert(args.begin(), ip_);
+    Process p(args, log);
+    const int st = p.started() ? p.Wait(2000) : -1;
+    if (out) {
+      *out = Slurp(log);
+      while (!out->empty() && (out->back() == '\n' || out->back() == ' ')) out->pop_back();
+      if (st != 0) *out += " (exit status " + std::to_string(st) + ")";
+    }
+    return st == 0;
+  }
+
+  std::string ip_, ns_a_, ns_b_, veth_a_, veth_b_, dir_;
+  bool ns_a_created_ = false, ns_b_created_ = false, veth_in_root_ = false;
+};
+
+// Finder discovery between two Agoras that share no inner links and no
+// loopback: A in one namespace, B in the other, only the veth between them.
 TEST(Integration, FinderAcrossNetworkNamespaces) {
-  GTEST_SKIP() << "Finder discovery across two network namespaces needs a veth pair with non-loopback "
-                  "addresses; this environment allows loopback traffic only. Discovery is tested on "
-                  "loopback multicast (FinderDiscoversAgorasByMulticastOnLoopback).";
+  if (::geteuid() != 0)
+    GTEST_SKIP() << "Finder across network namespaces: needs root to create network namespaces and a veth "
+                    "pair (euid "
+                 << ::geteuid() << "); discovery is still tested on loopback "
+                 << "(FinderDiscoversAgorasByMulticastOnLoopback).";
+  NetnsPair net;  // deletes what it created when the test ends, whatever happens
+  const std::string why = net.CreateNamespaces();
+  if (!why.empty())
+    GTEST_SKIP() << "Finder across network namespaces: cannot create network namespaces here (" << why
+                 << "); discovery is still tested on loopback (FinderDiscoversAgorasByMulticastOnLoopback).";
+  const std::string wired = net.Wire();
+  ASSERT_EQ(wired, "") << "network namespaces were created but wiring the veth pair failed";
+
+  const std::string d = net.dir();
+  const std::string tail = " " + Group() + " 7400\nPostOffice: SLWB\n";
+  WriteFile(d + "/a.cfg", std::string(NetnsPair::kAddrA) + tail);
+  WriteFile(d + "/b.cfg", std::string(NetnsPair::kAddrB) + tail);
+  // B (the subscriber) has the smaller id, so B's Finder dials A's veth
+  // address; A keeps running (subscribed to an unused type) until B is done,
+  // so B's stats line still lists that dialled channel.
+  const std::string id_b = std::to_string(1000000 + ::getpid() * 2), id_a = std::to_string(1000001 + ::getpid() * 2);
+  auto b = net.AgoraIn(net.ns_b(), {"--config", d + "/b.cfg", "--no-inner", "--id", id_b, "--subscribe", "23",
+                                    "--expect", "5", "--duration", "10", "--out", d + "/b.txt"});
+  ASSERT_TRUE(WaitReady(d + "/b.txt", 3000)) << Slurp(d + "/b.txt");
+  auto a = net.AgoraIn(net.ns_a(), {"--config", d + "/a.cfg", "--no-inner", "--id", id_a, "--publish", "23",
+                                    "--count", "5", "--rate", "100", "--wait-peers", "1", "--subscribe", "99",
+                                    "--duration", "10", "--out", d + "/a.txt"});
+  EXPECT_EQ(b->Wait(11000), 0) << Slurp(d + "/b.txt") << Slurp(d + "/a.txt");
+  a->Kill();
+  auto recv = Lines(d + "/b.txt", "recv ");
+  ASSERT_EQ(recv.size(), 5u) << Slurp(d + "/b.txt") << Slurp(d + "/a.txt");
+  for (size_t i = 0; i < recv.size(); ++i) {
+    EXPECT_EQ(Field(recv[i], "agora"), id_a) << recv[i];
+    EXPECT_EQ(Field(recv[i], "seq"), std::to_string(i + 1)) << recv[i];
+    EXPECT_EQ(Field(recv[i], "hops"), "1") << recv[i];
+    EXPECT_EQ(Field(recv[i], "scope"), "remote") << recv[i];  // Finder channels are links
+    EXPECT_EQ(Field(recv[i], "payload"), "message " + std::to_string(i)) << recv[i];
+  }
+  // The messages came over the channel B's Finder dialled to A's veth address.
+  auto st = Lines(d + "/b.txt", "stats ");
+  ASSERT_EQ(st.size(), 1u) << Slurp(d + "/b.txt");
+  EXPECT_NE(st[0].find(std::string("[finder -> ") + NetnsPair::kAddrA + ":"), std::string::npos) << st[0];
 }
 
 }  // namespace
