@@ -10,10 +10,7 @@ std::vector<BehaviorDef> parse_behavior_list(const std::string& text, const std:
   TokenStream ts(tokenize(text, true, false), file);
   std::vector<BehaviorDef> out;
   while (!ts.at_end()) {
-    const Token& open = ts.expect(Token::kOpen, "'(' opening a behaviour entry");
-    BehaviorDef b;
-    b.line = open.line;
-    b.column = open.column;
+    BehaviorDef b = ts.open<BehaviorDef>("'(' opening a behaviour entry");
     const Token& kw = ts.expect_word("'level'");
     if (kw.text != "level") ts.fail(kw, "expected 'level', got '" + kw.text + "'");
     const Token& lv = ts.peek();

@@ -139,7 +139,7 @@ void Brian::build(const ParsedConfig& c) {
   }
   engine_.set_filter(std::make_unique<ThresholdFilter>(options_.threshold,
                                                        options_.threshold_reliability.value_or(legacy)));
-  want_filter_ = std::make_unique<ThresholdFilter>(options_.threshold, true);
+  want_filter_ = ThresholdFilter(options_.threshold, true);
   engine_.finalize(options_.profile);
 
   const std::size_t nd = static_cast<std::size_t>(fuzzyfier_.datum_count());
@@ -229,7 +229,7 @@ void Brian::run_cycle(CycleTrace* trace) {
   candoer_.evaluate(state_, cando_);
   wanter_.evaluate(state_, want_);
   for (std::size_t b = 0; b < want_.size(); ++b)
-    weights_[b] = legacy ? (want_filter_->active(want_[b]) ? want_[b].value : 0.0) : want_[b].value;
+    weights_[b] = legacy ? (want_filter_.active(want_[b]) ? want_[b].value : 0.0) : want_[b].value;
   ctx_.fired = trace ? &fired_ : nullptr;
   engine_.run(cando_, ctx_, this, active_);
   if (legacy) {
@@ -280,7 +280,7 @@ void Brian::fill_trace(CycleTrace& t) const {
   for (int b = 0; b < engine_.size(); ++b) {
     const std::size_t i = static_cast<std::size_t>(b);
     if (cando_[i].stored()) t.cando.push_back({engine_.behavior(b).name(), cando_[i]});
-    if (legacy ? want_filter_->active(want_[i]) : want_[i].stored())
+    if (legacy ? want_filter_.active(want_[i]) : want_[i].stored())
       t.want.push_back({engine_.behavior(b).name(), want_[i]});
   }
   for (const auto& r : fired_) t.rules.push_back({engine_.behavior(r.behavior).name(), r.line, r.mu});

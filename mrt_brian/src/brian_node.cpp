@@ -63,6 +63,8 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   return o;
 }
 
+const char* profile_name(Profile p) { return p == Profile::kLegacy ? "legacy" : "manual"; }
+
 }  // namespace
 
 class BrianNode {
@@ -78,7 +80,7 @@ class BrianNode {
     diag_.setHardwareID("mrt_brian");
     diag_.add("Mr. BRIAN", this, &BrianNode::diagnose);
     ROS_INFO("brian_node: rule base %s, profile %s, %d behaviours, %s", options_.config.c_str(),
-             options_.brian.profile == Profile::kLegacy ? "legacy" : "manual", brian_->engine().size(),
+             profile_name(options_.brian.profile), brian_->engine().size(),
              options_.rate > 0 ? ("cycle at " + std::to_string(options_.rate) + " Hz").c_str() : "a cycle per message");
   }
 
@@ -146,21 +148,17 @@ class BrianNode {
       s.weight = brian_->weights()[i];
       m.behaviors.push_back(s);
     }
-    for (const auto& p : trace_.proposals) {
+    auto proposal = [](const std::string& action, const std::string& label, const std::string& behavior,
+                       double value) {
       mrt_msgs::BrianProposal q;
-      q.action = p.action;
-      q.label = p.label;
-      q.behavior = p.behavior;
-      q.value = p.mu;
-      m.proposals.push_back(q);
-    }
-    for (const auto& a : trace_.actions) {
-      mrt_msgs::BrianProposal q;
-      q.action = a.action;
-      q.label = a.label;
-      q.value = a.mu;
-      m.actions.push_back(q);
-    }
+      q.action = action;
+      q.label = label;
+      q.behavior = behavior;
+      q.value = value;
+      return q;
+    };
+    for (const auto& p : trace_.proposals) m.proposals.push_back(proposal(p.action, p.label, p.behavior, p.mu));
+    for (const auto& a : trace_.actions) m.actions.push_back(proposal(a.action, a.label, "", a.mu));
     m.commands = cmd.commands;
     introspection_pub_.publish(m);
   }
@@ -200,7 +198,7 @@ class BrianNode {
     else
       s.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
     s.add("rule base", options_.config);
-    s.add("profile", options_.brian.profile == Profile::kLegacy ? "legacy" : "manual");
+    s.add("profile", profile_name(options_.brian.profile));
     s.add("behaviours", brian_->engine().size());
     s.add("cycles", cycles_);
     s.add("dropped messages", dropped_);

@@ -1,24 +1,13 @@
 #include "mrt_brian/crisp_input.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <sstream>
 
+#include "mrt_brian/lexer.h"
 #include "mrt_common/parse_error.h"
 
 namespace mrt::brian {
 
 using mrt::common::ParseError;
-
-namespace {
-bool to_number(const std::string& s, double* v) {
-  char* end = nullptr;
-  errno = 0;
-  *v = std::strtod(s.c_str(), &end);
-  return !s.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(*v);
-}
-}  // namespace
 
 std::vector<CrispDataList> parse_crisp_input(const std::string& text, const std::string& file) {
   std::vector<CrispDataList> cycles;
@@ -45,10 +34,10 @@ std::vector<CrispDataList> parse_crisp_input(const std::string& text, const std:
       throw ParseError(file, lineno, col, "expected 'NAME VALUE [RELIABILITY]', got " + std::to_string(f.size()) + " fields");
     CrispDatum d;
     d.name = f[0];
-    if (!to_number(f[1], &d.value))
+    if (!parse_number(f[1], &d.value))
       throw ParseError(file, lineno, static_cast<int>(line.find(f[1], static_cast<std::size_t>(col))) + 1,
                        "expected a number as the value of " + d.name + ", got '" + f[1] + "'");
-    if (f.size() == 3 && (!to_number(f[2], &d.reliability) || d.reliability < 0.0 || d.reliability > 1.0))
+    if (f.size() == 3 && (!parse_number(f[2], &d.reliability) || d.reliability < 0.0 || d.reliability > 1.0))
       throw ParseError(file, lineno, static_cast<int>(line.rfind(f[2])) + 1,
                        "expected a reliability in [0, 1] for " + d.name + ", got '" + f[2] + "'");
     current.push_back(std::move(d));

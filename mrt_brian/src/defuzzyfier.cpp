@@ -15,21 +15,13 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
                          const std::string& assoc_file)
     : method_(method), profile_(profile) {
   SymbolTable shape_ids;
-  for (const auto& def : shapes) {
-    if (shape_ids.find(def.name) >= 0)
-      throw ParseError(shapes_file, def.line, def.column, "shape '" + def.name + "' defined twice");
-    shape_ids.intern(def.name);
-    try {
-      shapes_.push_back(Shape::from_def(def));
-    } catch (const std::invalid_argument& e) {
-      throw ParseError(shapes_file, def.line, def.column, e.what());
-    }
-    if (method == DefuzzMethod::kBarycenter)
-      for (const auto& set : def.sets)
-        if (set.type == "SNG" || set.type == "TOL" || set.type == "TOR")
-          throw ParseError(shapes_file, set.line, set.column,
-                           "barycenter defuzzification needs sets with an area (TRI DIV TRA REC), got " + set.type);
-  }
+  shapes_ = build_shapes(shapes, shapes_file, shape_ids, [&](const ShapeDef& def) {
+    if (method != DefuzzMethod::kBarycenter) return;
+    for (const auto& set : def.sets)
+      if (set.type == "SNG" || set.type == "TOL" || set.type == "TOR")
+        throw ParseError(shapes_file, set.line, set.column,
+                         "barycenter defuzzification needs sets with an area (TRI DIV TRA REC), got " + set.type);
+  });
   for (const auto& a : assocs) {
     const int shape = shape_ids.find(a.shape);
     if (shape < 0)

@@ -1,7 +1,5 @@
 #include "mrt_brian/fuzzyfier.h"
 
-#include <stdexcept>
-
 #include "mrt_common/parse_error.h"
 
 namespace mrt::brian {
@@ -11,16 +9,7 @@ using mrt::common::ParseError;
 Fuzzyfier::Fuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<AssociationDef>& assocs,
                      const std::string& shapes_file, const std::string& assoc_file) {
   SymbolTable shape_ids;
-  for (const auto& def : shapes) {
-    if (shape_ids.find(def.name) >= 0)
-      throw ParseError(shapes_file, def.line, def.column, "shape '" + def.name + "' defined twice");
-    shape_ids.intern(def.name);
-    try {
-      shapes_.push_back(Shape::from_def(def));
-    } catch (const std::invalid_argument& e) {
-      throw ParseError(shapes_file, def.line, def.column, e.what());
-    }
-  }
+  shapes_ = build_shapes(shapes, shapes_file, shape_ids);
   for (const auto& a : assocs) {
     const int shape = shape_ids.find(a.shape);
     if (shape < 0)

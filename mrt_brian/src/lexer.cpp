@@ -105,16 +105,19 @@ const Token& TokenStream::expect(Token::Kind k, const std::string& what) {
 
 double TokenStream::expect_number(const std::string& what) {
   const Token& t = peek();
-  if (t.kind == Token::kWord) {
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(t.text.c_str(), &end);
-    if (end && *end == '\0' && errno != ERANGE && std::isfinite(v)) {
-      next();
-      return v;
-    }
+  double v = 0.0;
+  if (t.kind == Token::kWord && parse_number(t.text, &v)) {
+    next();
+    return v;
   }
   fail(t, "expected " + what + ", got " + describe(t));
+}
+
+bool parse_number(const std::string& text, double* value) {
+  char* end = nullptr;
+  errno = 0;
+  *value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(*value);
 }
 
 void TokenStream::fail(const Token& at, const std::string& message) const {

@@ -18,9 +18,6 @@ void set_proposal(TokenStream& ts, const Token& t, ExprAst& e) {
   e.label = body.substr(p2 + 1);
 }
 
-}  // namespace
-
-namespace {
 constexpr int kMaxDepth = 256;  // deeper nesting would only exhaust the stack
 thread_local int depth = 0;
 struct DepthGuard {
@@ -32,10 +29,7 @@ struct DepthGuard {
 ExprAst parse_expression(TokenStream& ts) {
   DepthGuard guard;
   if (depth > kMaxDepth) ts.fail(ts.peek(), "expression nested deeper than " + std::to_string(kMaxDepth) + " levels");
-  const Token& open = ts.expect(Token::kOpen, "'(' opening an expression");
-  ExprAst e;
-  e.line = open.line;
-  e.column = open.column;
+  ExprAst e = ts.open<ExprAst>("'(' opening an expression");
   const Token& head = ts.expect_word("AND, OR, NOT, D, P or a predicate name");
   if (head.text == "AND" || head.text == "OR") {
     e.kind = head.text == "AND" ? ExprAst::kAnd : ExprAst::kOr;

@@ -10,10 +10,7 @@ std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& f
   std::vector<ShapeDef> out;
   while (!ts.at_end()) {
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
-    const Token& open = ts.expect(Token::kOpen, "'(' opening a shape");
-    ShapeDef shape;
-    shape.line = open.line;
-    shape.column = open.column;
+    ShapeDef shape = ts.open<ShapeDef>("'(' opening a shape");
     shape.name = ts.expect_word("a shape name").text;
     while (ts.peek().kind == Token::kOpen) {
       ts.next();
@@ -46,10 +43,7 @@ std::vector<AssociationDef> parse_associations(const std::string& text, const st
   std::vector<AssociationDef> out;
   while (!ts.at_end()) {
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
-    const Token& open = ts.expect(Token::kOpen, "'(' opening an association");
-    AssociationDef a;
-    a.line = open.line;
-    a.column = open.column;
+    AssociationDef a = ts.open<AssociationDef>("'(' opening an association");
     a.name = ts.expect_word("a datum or action name").text;
     a.shape = ts.expect_word("a shape name").text;
     ts.expect(Token::kClose, "')' closing the association of " + a.name);

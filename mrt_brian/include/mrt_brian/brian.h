@@ -115,7 +115,7 @@ class Brian : private HierarchyObserver {
   Candoer candoer_;
   Wanter wanter_;
   BehaviorEngine engine_;
-  std::unique_ptr<ThresholdFilter> want_filter_;
+  ThresholdFilter want_filter_;  // legacy: the WANT filter
 
   // Per-cycle state, allocated once.
   std::vector<double> input_value_, input_rel_;

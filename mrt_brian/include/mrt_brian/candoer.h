@@ -1,26 +1,14 @@
 // Candoer (manual §10.3.4): the activation (CANDO) value of each behaviour.
 #pragma once
 
-#include <algorithm>
-#include <vector>
-
-#include "mrt_brian/preacher.h"
+#include "mrt_brian/behavior_conditions.h"
 
 namespace mrt::brian {
 
-class Candoer {
+/// out[behaviour] = CANDO value (Cando.ini).
+class Candoer : public BehaviorConditions {
  public:
-  Candoer() = default;
-  Candoer(const ExpressionPool* pool, DefinitionList defs) : pool_(pool), defs_(std::move(defs)) {}
-  /// out[behaviour] = CANDO value; behaviours without a condition read <0, 1>.
-  void evaluate(const EvalState& s, std::vector<FuzzyValue>& out) const {
-    std::fill(out.begin(), out.end(), FuzzyValue{});
-    defs_.evaluate(*pool_, s, out.data());
-  }
-
- private:
-  const ExpressionPool* pool_ = nullptr;
-  DefinitionList defs_;
+  using BehaviorConditions::BehaviorConditions;
 };
 
 }  // namespace mrt::brian

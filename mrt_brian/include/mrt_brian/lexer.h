@@ -36,6 +36,16 @@ class TokenStream {
   const Token& expect(Token::Kind k, const std::string& what);
   const Token& expect_word(const std::string& what) { return expect(Token::kWord, what); }
   double expect_number(const std::string& what);
+  /// Consumes the '(' opening an element (or throws "expected <what>") and
+  /// returns a `Def` whose line and column are those of the '('.
+  template <typename Def>
+  Def open(const std::string& what) {
+    const Token& t = expect(Token::kOpen, what);
+    Def def;
+    def.line = t.line;
+    def.column = t.column;
+    return def;
+  }
   [[noreturn]] void fail(const Token& at, const std::string& message) const;
   const std::string& file() const { return file_; }
 
@@ -44,6 +54,10 @@ class TokenStream {
   std::size_t pos_ = 0;
   std::string file_;
 };
+
+/// Reads `text`, all of it, as a finite double into `*value`; false if it
+/// is not one (empty, trailing characters, out of range, inf, nan).
+bool parse_number(const std::string& text, double* value);
 
 /// Reads a whole regular file of at most 64 MiB; throws
 /// ParseError(path, 0, 0, "cannot open file ...") otherwise.

@@ -2,12 +2,14 @@
 // of an action (manual §10.3.1).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mrt_brian/config_ast.h"
 #include "mrt_brian/fuzzy_set.h"
+#include "mrt_brian/symbol_table.h"
 
 namespace mrt::brian {
 
@@ -29,5 +31,12 @@ class Shape {
   std::string name_;
   std::vector<std::shared_ptr<const FuzzySet>> sets_;
 };
+
+/// The shapes of a shapes file (shape_ctof.txt, s_shape.txt), in order, each
+/// name interned in `ids` with its index. Throws mrt::common::ParseError
+/// naming `file` for a shape defined twice or a bad set; `check`, if given,
+/// is called on each definition once its shape is built and may throw too.
+std::vector<Shape> build_shapes(const std::vector<ShapeDef>& defs, const std::string& file, SymbolTable& ids,
+                                const std::function<void(const ShapeDef&)>& check = {});
 
 }  // namespace mrt::brian

@@ -2,26 +2,14 @@
 // the weight the Composer applies to its proposals.
 #pragma once
 
-#include <algorithm>
-#include <vector>
-
-#include "mrt_brian/preacher.h"
+#include "mrt_brian/behavior_conditions.h"
 
 namespace mrt::brian {
 
-class Wanter {
+/// out[behaviour] = WANT value (want.txt).
+class Wanter : public BehaviorConditions {
  public:
-  Wanter() = default;
-  Wanter(const ExpressionPool* pool, DefinitionList defs) : pool_(pool), defs_(std::move(defs)) {}
-  /// out[behaviour] = WANT value; behaviours without a condition read <0, 1>.
-  void evaluate(const EvalState& s, std::vector<FuzzyValue>& out) const {
-    std::fill(out.begin(), out.end(), FuzzyValue{});
-    defs_.evaluate(*pool_, s, out.data());
-  }
-
- private:
-  const ExpressionPool* pool_ = nullptr;
-  DefinitionList defs_;
+  using BehaviorConditions::BehaviorConditions;
 };
 
 }  // namespace mrt::brian
