@@ -42,7 +42,7 @@ void Sequencer::start_task(std::size_t index, double now, const Pose2D& pose,
   task_.emplace(options_.path_task, plan_[index], index);
   task_->activate(now, pose);
   if (mode_ == Mode::kManual && options_.suspend_in_manual) task_->suspend(now);
-  ev.push_back({SequencerEvent::Type::kTaskStarted, now, index, plan_[index], pose});
+  ev.push_back({SequencerEvent::Type::kTaskStarted, now, index, plan_[index], pose, 0.0, task_->timeout()});
 }
 
 std::vector<SequencerEvent> Sequencer::set_plan(const std::vector<Point2D>& points, double now,
@@ -71,34 +71,35 @@ std::vector<SequencerEvent> Sequencer::update(double now, const Pose2D& pose) {
   while (state_ == SequencerState::kRunning && task_) {
     const TaskState s = task_->update(now, pose);
     const std::size_t i = task_->index();
+    const double el = task_->elapsed(now), to = task_->timeout();
     if (s == TaskState::kSucceeded) {
       ++reached_;
       consecutive_aborts_ = 0;
-      ev.push_back({T::kTaskSucceeded, now, i, plan_[i], pose});
+      ev.push_back({T::kTaskSucceeded, now, i, plan_[i], pose, el, to});
       if (i + 1 < plan_.size()) {
         start_task(i + 1, now, pose, ev);
         continue;
       }
       task_.reset();
       state_ = SequencerState::kDone;
-      ev.push_back({T::kRouteCompleted, now, i, plan_[i], pose});
+      ev.push_back({T::kRouteCompleted, now, i, plan_[i], pose, el, to});
     } else if (s == TaskState::kFailed) {
       ++failed_;
-      ev.push_back({T::kTaskFailed, now, i, plan_[i], pose});
+      ev.push_back({T::kTaskFailed, now, i, plan_[i], pose, el, to});
       if (task_->spec().on_failure == OnFailure::kSkip && i + 1 < plan_.size()) {
         start_task(i + 1, now, pose, ev);
         continue;
       }
       ++consecutive_aborts_;
-      ev.push_back({T::kPlanAborted, now, i, plan_[i], pose});
+      ev.push_back({T::kPlanAborted, now, i, plan_[i], pose, el, to});
       task_.reset();
       if (options_.max_replans > 0 && consecutive_aborts_ > options_.max_replans) {
         state_ = SequencerState::kGaveUp;
-        ev.push_back({T::kGaveUp, now, i, plan_[i], pose});
+        ev.push_back({T::kGaveUp, now, i, plan_[i], pose, el, to});
       } else {
         ++replans_;
         state_ = SequencerState::kWaitingForPlan;
-        ev.push_back({T::kReplanRequested, now, i, plan_[i], pose});
+        ev.push_back({T::kReplanRequested, now, i, plan_[i], pose, el, to});
       }
     }
     break;

@@ -43,6 +43,8 @@ struct SequencerEvent {
   std::size_t index = 0;
   Point2D point;
   Pose2D pose;
+  double elapsed = 0.0;  // task events: s the task had been active
+  double timeout = 0.0;  // task events: its failure limit
 };
 const char* to_string(SequencerEvent::Type t);
 

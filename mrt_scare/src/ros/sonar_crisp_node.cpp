@@ -1,0 +1,144 @@
+// sonar_crisp_node: the sonar belt as sector distances, merged with the
+// SCARE goal and the previous commands into one Mr. BRIAN cycle's crisp data.
+#include <mrt_msgs/CommandArray.h>
+#include <mrt_msgs/CrispDataArray.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Range.h>
+
+#include <cmath>
+#include <functional>
+
+#include "mrt_scare/crisp_builder.h"
+#include "mrt_scare/sonar_sectors.h"
+
+namespace {
+
+using namespace mrt::scare;
+
+class SonarCrispNode {
+ public:
+  SonarCrispNode(ros::NodeHandle& nh, std::vector<double> mounts, double max_range, double rate,
+                 double input_timeout)
+      : sectors_(mounts, default_sectors(), max_range), input_timeout_(input_timeout) {
+    for (std::size_t i = 0; i < mounts.size(); ++i)
+      subs_.push_back(nh.subscribe<sensor_msgs::Range>(
+          "sonar/" + std::to_string(i), 5, std::bind(&SonarCrispNode::on_sonar, this, i, std::placeholders::_1)));
+    subs_.push_back(nh.subscribe("goal_crisp", 5, &SonarCrispNode::on_goal, this));
+    subs_.push_back(nh.subscribe("commands", 5, &SonarCrispNode::on_commands, this));
+    pub_ = nh.advertise<mrt_msgs::CrispDataArray>("crisp_data", 10);
+    for (const auto& s : sectors_.sectors()) names_.push_back(s.name);
+    timer_ = nh.createTimer(ros::Duration(1.0 / rate), &SonarCrispNode::on_timer, this);
+  }
+
+ private:
+  void on_sonar(std::size_t i, const sensor_msgs::RangeConstPtr& r) {
+    if (!sectors_.set_range(i, r->range)) {
+      ++dropped_;
+      ROS_WARN_THROTTLE(5, "dropped a bad reading of sonar %zu (%d dropped)", i, dropped_);
+      return;
+    }
+    have_sonar_ = true;
+  }
+
+  void on_goal(const mrt_msgs::CrispDataArray& m) {
+    goal_ = m;
+    goal_time_ = ros::Time::now();
+  }
+
+  void on_commands(const mrt_msgs::CommandArray& m) {
+    last_speed_ = last_jog_ = 0.0;  // an absent command is 0
+    for (const auto& c : m.commands) {
+      if (!std::isfinite(c.value)) continue;
+      if (c.name == "Speed") last_speed_ = c.value;
+      if (c.name == "Jog") last_jog_ = c.value;
+    }
+  }
+
+  void on_timer(const ros::TimerEvent&) {
+    if (!have_sonar_) return;
+    const ros::Time now = ros::Time::now();
+    CrispInputs in;
+    in.sector_names = names_;
+    in.sector_distances = sectors_.distances();
+    in.last_speed_cm = last_speed_;
+    in.last_jog_deg = last_jog_;
+    mrt_msgs::CrispDataArray out;
+    out.header.stamp = now;
+    for (const auto& c : build_crisp(in)) {
+      // The sequencer's data (goal, Status, remote) come from goal_crisp.
+      if (c.name.rfind("Obstacle", 0) != 0 && c.name != "FreeSide" && c.name.rfind("Last", 0) != 0) continue;
+      mrt_msgs::CrispData d;
+      d.name = c.name;
+      d.value = c.value;
+      d.reliability = c.reliability;
+      out.data.push_back(d);
+    }
+    if ((now - goal_time_).toSec() < input_timeout_) {
+      out.data.insert(out.data.end(), goal_.data.begin(), goal_.data.end());
+    } else {
+      // No sequencer: stand still (HaveGoal 0, Auto).
+      mrt_msgs::CrispData d;
+      d.name = "HaveGoal";
+      d.value = 0.0;
+      d.reliability = 1.0;
+      out.data.push_back(d);
+      d.name = "Status";
+      d.value = 1.0;
+      out.data.push_back(d);
+    }
+    pub_.publish(out);
+  }
+
+  SonarSectors sectors_;
+  double input_timeout_;
+  std::vector<std::string> names_;
+  mrt_msgs::CrispDataArray goal_;
+  ros::Time goal_time_;
+  double last_speed_ = 0.0, last_jog_ = 0.0;
+  bool have_sonar_ = false;
+  int dropped_ = 0;
+  std::vector<ros::Subscriber> subs_;
+  ros::Publisher pub_;
+  ros::Timer timer_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "sonar_crisp");
+  ros::NodeHandle nh, pnh("~");
+  int count;
+  double max_range, rate, input_timeout;
+  std::vector<double> mounts;
+  pnh.param("sonar_count", count, 16);
+  pnh.param("max_range", max_range, 5.0);
+  pnh.param("rate", rate, 10.0);
+  pnh.param("input_timeout", input_timeout, 0.5);
+  if (pnh.getParam("mounts_deg", mounts)) {
+    if (mounts.empty()) {
+      ROS_FATAL("bad parameter ~mounts_deg: empty list");
+      return 1;
+    }
+  } else {
+    if (count < 1 || count > 64) {
+      ROS_FATAL("bad parameter ~sonar_count: must be in 1..64, got %d", count);
+      return 1;
+    }
+    mounts = even_mounts_deg(static_cast<std::size_t>(count));
+  }
+  if (!(max_range > 0)) {
+    ROS_FATAL("bad parameter ~max_range: must be > 0, got %g", max_range);
+    return 1;
+  }
+  if (!(rate > 0 && rate <= 1000)) {
+    ROS_FATAL("bad parameter ~rate: must be in (0, 1000], got %g", rate);
+    return 1;
+  }
+  if (!(input_timeout > 0)) {
+    ROS_FATAL("bad parameter ~input_timeout: must be > 0, got %g", input_timeout);
+    return 1;
+  }
+  SonarCrispNode node(nh, mounts, max_range, rate, input_timeout);
+  ros::spin();
+  return 0;
+}
