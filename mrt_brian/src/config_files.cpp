@@ -1,5 +1,6 @@
 #include "mrt_brian/config_files.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -112,8 +113,7 @@ ParsedConfig ParsedConfig::load(const ConfigFiles& files, const std::vector<std:
     }
     c.behavior_files.push_back(path);
     const std::string ext = fs::path(path).extension().string();
-    bool custom = false;
-    for (const auto& e : custom_extensions) custom = custom || e == ext;
+    const bool custom = std::find(custom_extensions.begin(), custom_extensions.end(), ext) != custom_extensions.end();
     c.rules.push_back(custom ? std::vector<RuleDef>{} : parse_rules(text, path));
   }
   return c;
