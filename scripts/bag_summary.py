@@ -11,6 +11,37 @@ import sys
 import rosbag
 
 
+def roby_summary(bag, info):
+    """Roby (launch/roby.launch): path points, clearance, time. Printed only
+    when the bag holds the SCARE task status."""
+    status_topics = [t for t in info.topics if t.endswith("/task_status")]
+    if not status_topics:
+        return
+    first = last = done = None
+    plan_size = 0
+    for _, msg, _ in bag.read_messages(topics=status_topics):
+        if first is None:
+            first = msg
+        if not plan_size and msg.plan_size:
+            plan_size = msg.plan_size
+        if msg.event == "route_completed" and done is None:
+            done = msg
+        last = msg
+    end = done if done is not None else last
+    print(f"roby: path points reached: {end.reached} of {plan_size}"
+          + ("" if done is not None else " (route still running when the recording ended)"))
+    print(f"roby: tasks failed: {end.failed}, re-plan requests: {end.replans}, mode: {end.mode}")
+    minimum = None
+    for _, msg, _ in bag.read_messages(
+            topics=[t for t in info.topics if t.endswith("/min_clearance")]):
+        minimum = msg.data
+    if minimum is not None:
+        print(f"roby: minimum obstacle clearance (ground truth): {minimum:.3f} m")
+    took = end.header.stamp.to_sec() - first.header.stamp.to_sec()
+    what = "time taken for the route" if done is not None else "time driven"
+    print(f"roby: {what}: {took:.1f} s (sim time {end.header.stamp.to_sec():.1f} s)")
+
+
 def main(path, wall):
     with rosbag.Bag(path) as bag:
         info = bag.get_type_and_topic_info()
@@ -28,6 +59,7 @@ def main(path, wall):
             yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
             print(f"final ground truth {topic}: x={p.x:.3f} m y={p.y:.3f} m "
                   f"theta={math.degrees(yaw):.1f} deg (t={msg.header.stamp.to_sec():.2f} s)")
+        roby_summary(bag, info)
         sim = bag.get_end_time() - bag.get_start_time()
         print(f"simulated time recorded: {sim:.2f} s in {wall:.2f} s wall: "
               f"real-time factor {sim / wall:.2f}")

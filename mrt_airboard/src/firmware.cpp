@@ -64,7 +64,7 @@ void Firmware::handle(const Frame& f) {
       }
       mode_ = Mode::kSpeed;
       command_received(f.seq);
-      return reply_state(f.seq);
+      return reply_set(f.seq);
     }
     case proto::kSetPwm: {
       std::vector<double> d;
@@ -77,7 +77,7 @@ void Firmware::handle(const Frame& f) {
       }
       mode_ = Mode::kPwm;
       command_received(f.seq);
-      return reply_state(f.seq);
+      return reply_set(f.seq);
     }
     case proto::kSetGains: {
       Gains g;
@@ -98,11 +98,14 @@ void Firmware::handle(const Frame& f) {
     case proto::kHeartbeat:
       if (!f.payload.empty()) return nack(proto::kNackBadLength);
       since_cmd_ = 0;  // keeps the watchdog quiet, does not re-arm a tripped one
-      return reply_state(f.seq);
+      return reply_set(f.seq);
     case proto::kSetStream: {
       uint16_t p;
-      if (!parse_set_stream(f, &p)) return nack(proto::kNackBadLength);
+      uint8_t format;
+      if (!parse_set_stream(f, &p, &format)) return nack(proto::kNackBadLength);
+      if (format != proto::kFormatState && format != proto::kFormatCompact) return nack(proto::kNackBadArgument);
       stream_ms_ = p;
+      format_ = format;
       return reply_state(f.seq);
     }
     case proto::kGetInfo:
@@ -115,6 +118,13 @@ void Firmware::handle(const Frame& f) {
 }
 
 void Firmware::reply_state(uint8_t seq) { append_frame(out_, make_state(seq, state())); }
+
+void Firmware::reply_set(uint8_t seq) {
+  if (format_ == proto::kFormatCompact)
+    append_frame(out_, make_short_state(seq, state()));
+  else
+    reply_state(seq);
+}
 
 BoardState Firmware::state() const {
   BoardState s;
@@ -221,7 +231,15 @@ void Firmware::step() {
     m.meas = static_cast<double>(m.ticks - old) / counts_per_rad / window;
   }
   hist_at_ = (hist_at_ + 1) % static_cast<std::size_t>(c_.speed_window_ms);
-  if (stream_ms_ > 0 && time_ms_ % stream_ms_ == 0) reply_state(last_seq_);
+  if (stream_ms_ > 0 && time_ms_ % stream_ms_ == 0) {
+    if (format_ == proto::kFormatCompact) {
+      const BoardState s = state();
+      append_frame(out_, make_short_state(last_seq_, s));
+      if (++streamed_ % proto::kCountersEvery == 0) append_frame(out_, make_counters(last_seq_, s));
+    } else {
+      reply_state(last_seq_);
+    }
+  }
 }
 
 }  // namespace mrt::airboard

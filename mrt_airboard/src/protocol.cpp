@@ -224,6 +224,34 @@ Frame make_set_stream(uint8_t seq, uint16_t period_ms) {
   return f;
 }
 
+Frame make_set_stream(uint8_t seq, uint16_t period_ms, uint8_t format) {
+  Frame f = make_set_stream(seq, period_ms);
+  f.payload.push_back(format);
+  return f;
+}
+
+Frame make_short_state(uint8_t seq, const BoardState& s) {
+  check_motors(s.motors.size());
+  Frame f = frame(proto::kShortState, seq);
+  Writer w{f.payload};
+  w.u16(static_cast<uint16_t>(s.time_ms));
+  w.u8(s.status);
+  for (const MotorState& m : s.motors) {
+    w.i16(static_cast<int16_t>(static_cast<uint16_t>(static_cast<uint32_t>(m.ticks))));
+    w.i16(round_sat<int16_t>(m.setpoint * 1000.0));
+  }
+  return f;
+}
+
+Frame make_counters(uint8_t seq, const BoardState& s) {
+  Frame f = frame(proto::kCounters, seq);
+  Writer w{f.payload};
+  w.u16(s.since_cmd_ms);
+  w.u16(s.frames_bad);
+  w.u16(s.watchdog_trips);
+  return f;
+}
+
 Frame make_state(uint8_t seq, const BoardState& s) {
   check_motors(s.motors.size());
   Frame f = frame(proto::kState, seq);
@@ -294,10 +322,36 @@ bool parse_set_gains(const Frame& f, Gains* g) {
   return true;
 }
 
-bool parse_set_stream(const Frame& f, uint16_t* period_ms) {
-  if (f.type != proto::kSetStream || f.payload.size() != 2) return false;
+bool parse_set_stream(const Frame& f, uint16_t* period_ms, uint8_t* format) {
+  if (f.type != proto::kSetStream || (f.payload.size() != 2 && f.payload.size() != 3)) return false;
   Reader r{f.payload};
   *period_ms = r.u16();
+  if (format) *format = f.payload.size() == 3 ? r.u8() : proto::kFormatState;
+  return true;
+}
+
+bool parse_short_state(const Frame& f, ShortState* s) {
+  if (f.type != proto::kShortState || f.payload.size() < 3 || (f.payload.size() - 3) % 4 != 0) return false;
+  const std::size_t n = (f.payload.size() - 3) / 4;
+  if (n == 0 || n > proto::kMaxMotors) return false;
+  Reader r{f.payload};
+  s->time_ms = r.u16();
+  s->status = r.u8();
+  s->ticks.resize(n);
+  s->setpoints.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    s->ticks[i] = r.i16();
+    s->setpoints[i] = r.i16() / 1000.0;
+  }
+  return true;
+}
+
+bool parse_counters(const Frame& f, BoardCounters* c) {
+  if (f.type != proto::kCounters || f.payload.size() != 6) return false;
+  Reader r{f.payload};
+  c->since_cmd_ms = r.u16();
+  c->frames_bad = r.u16();
+  c->watchdog_trips = r.u16();
   return true;
 }
 

@@ -235,8 +235,8 @@ TEST_F(Airboard, WatchdogStopsTheWheels) {
   EXPECT_GT(stopped, 5u);
 }
 
-// 10 % of the PC -> board bytes (and 1 % of the replies) get a bit flipped:
-// the link survives and only the commanded set-points (or 0 after a watchdog
+// 10 % of the PC -> board bytes (and 1 % of the replies, corruption.test, or
+// 10 % as well, corruption_both.test) get a bit flipped: the link survives and only the commanded set-points (or 0 after a watchdog
 // trip) ever reach a motor.
 TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
   status_.clear();
@@ -278,9 +278,9 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
   ASSERT_FALSE(odom_.empty());
   const double dist = std::hypot(odom_.back().pose.x - odom_.front().pose.x, odom_.back().pose.y - odom_.front().pose.y);
   std::printf("corruption: %zu states on target, %zu stopped by the watchdog, board discarded %u frames, node "
-              "discarded %lu, %u watchdog trips, travelled %.2f m\n",
-              on_target, zero, last.board_frames_bad, static_cast<unsigned long>(last.frames_bad),
-              last.watchdog_trips, dist);
+              "accepted %lu and discarded %lu, %u watchdog trips, travelled %.2f m\n",
+              on_target, zero, last.board_frames_bad, static_cast<unsigned long>(last.frames_good),
+              static_cast<unsigned long>(last.frames_bad), last.watchdog_trips, dist);
   EXPECT_GT(on_target, zero);
   EXPECT_GT(dist, 0.3);
 }

@@ -178,3 +178,44 @@ TEST(Firmware, NoCorruptedCommandIsApplied) {
   EXPECT_GT(l.fw.rx_stats().frames_bad(), 500u);
   EXPECT_GT(l.fw.commands_applied(), 500u);
 }
+
+// The compact format: SHORT_STATE streamed (with COUNTERS after every 10th)
+// and as the reply to set commands and heartbeats; GET_STATE still answers STATE.
+TEST(Firmware, StreamsCompactState) {
+  Link l;
+  l.send(make_set_stream(1, 3, proto::kFormatCompact));
+  EXPECT_EQ(l.fw.stream_format(), proto::kFormatCompact);
+  l.states.clear();
+  l.others.clear();
+  l.run_ms(300);
+  int shorts = 0, counters = 0;
+  for (const Frame& f : l.others) {
+    ShortState s;
+    BoardCounters c;
+    if (parse_short_state(f, &s)) {
+      ++shorts;
+      EXPECT_EQ(s.ticks.size(), 2u);
+    } else if (parse_counters(f, &c)) {
+      ++counters;
+    }
+  }
+  EXPECT_EQ(shorts, 100);
+  EXPECT_EQ(counters, 10);
+  EXPECT_TRUE(l.states.empty());
+  l.others.clear();
+  l.send(make_set_speed(9, {3.25, -1.5}));
+  ASSERT_EQ(l.others.size(), 1u);
+  ShortState s;
+  ASSERT_TRUE(parse_short_state(l.others[0], &s));
+  EXPECT_EQ(l.others[0].seq, 9);
+  EXPECT_EQ(s.setpoints, (std::vector<double>{3.25, -1.5}));
+  l.send(make_simple(proto::kGetState, 10));
+  ASSERT_EQ(l.states.size(), 1u);
+  // Unknown formats are refused; the 2-byte request goes back to STATE.
+  l.others.clear();
+  l.send(make_set_stream(11, 3, 7));
+  ASSERT_EQ(l.others.size(), 1u);
+  EXPECT_EQ(l.others[0].type, proto::kNack);
+  l.send(make_set_stream(12, 10));
+  EXPECT_EQ(l.fw.stream_format(), proto::kFormatState);
+}

@@ -56,3 +56,44 @@ TEST(StateTracker, FollowsAFasterHostClockWithinTheDriftBound) {
     t.update(state(static_cast<uint32_t>(i * 10), {0}), i * 0.010 * 1.0005);
   EXPECT_NEAR(t.host_stamp(), 10.005, 1e-4);
 }
+
+namespace {
+ShortState short_state(uint32_t ms, std::vector<int32_t> ticks) {
+  ShortState s;
+  s.time_ms = static_cast<uint16_t>(ms);
+  for (int32_t t : ticks) {
+    s.ticks.push_back(static_cast<int16_t>(static_cast<uint16_t>(static_cast<uint32_t>(t))));
+    s.setpoints.push_back(0.0);
+  }
+  return s;
+}
+}  // namespace
+
+// SHORT_STATEs (16-bit clock and counts) continue a STATE's 32-bit ones and
+// are continued by them; a gap beyond the horizon re-bases the counts.
+TEST(StateTracker, UnwrapsShortStates) {
+  StateTracker t(0.0);
+  ASSERT_TRUE(t.update(state(65530, {32760, -100000}), 10.0));
+  ASSERT_TRUE(t.update_short(short_state(65540, {32790, -130000}), 10.010, 500));
+  EXPECT_FALSE(t.rebased());
+  EXPECT_EQ(t.counts()[0], 32790);
+  EXPECT_EQ(t.counts()[1], -130000);
+  EXPECT_NEAR(t.board_time(), 65.540, 1e-9);
+  EXPECT_FALSE(t.update_short(short_state(65540, {0, 0}), 10.011, 500));  // same instant
+  ASSERT_TRUE(t.update_short(short_state(65550, {32800, -160000}), 10.020, 500));
+  EXPECT_EQ(t.counts()[1], -160000);
+  // A STATE after SHORT_STATEs continues from their low bits.
+  ASSERT_TRUE(t.update(state(65560, {32810, -190000}), 10.030));
+  EXPECT_EQ(t.counts()[0], 32810);
+  EXPECT_EQ(t.counts()[1], -190000);
+  EXPECT_NEAR(t.board_time(), 65.560, 1e-9);
+  // 600 ms without a frame: beyond a 500 ms horizon, the counts restart.
+  ASSERT_TRUE(t.update_short(short_state(66160, {40000, -1}), 10.630, 500));
+  EXPECT_TRUE(t.rebased());
+  EXPECT_EQ(t.counts()[1], -1);
+  EXPECT_NEAR(t.board_time(), 66.160, 1e-9);
+  ASSERT_TRUE(t.update_short(short_state(66170, {40010, -11}), 10.640, 500));
+  EXPECT_FALSE(t.rebased());
+  EXPECT_EQ(t.counts()[1], -11);
+  EXPECT_NEAR(t.host_stamp(), 10.640, 1e-9);
+}

@@ -4,7 +4,7 @@
 //   airboard_frame encode set_speed SEQ W1 [W2 ..]     (rad/s)
 //   airboard_frame encode set_pwm SEQ D1 [D2 ..]       (duty in [-1, 1])
 //   airboard_frame encode set_gains SEQ MOTOR KP KI    (MOTOR 255 = all)
-//   airboard_frame encode set_stream SEQ PERIOD_MS
+//   airboard_frame encode set_stream SEQ PERIOD_MS [FORMAT]   (FORMAT 0 = STATE, 1 = compact)
 //   airboard_frame encode get_state|heartbeat|get_info SEQ
 //   airboard_frame decode [--binary] [FILE]            (hex bytes, whitespace separated; '-' or none = stdin)
 //
@@ -50,6 +50,8 @@ std::string type_name(uint8_t t) {
     case proto::kState: return "STATE";
     case proto::kInfo: return "INFO";
     case proto::kNack: return "NACK";
+    case proto::kShortState: return "SHORT_STATE";
+    case proto::kCounters: return "COUNTERS";
     default: return "UNKNOWN";
   }
 }
@@ -59,15 +61,26 @@ void print(const Frame& f) {
   std::vector<double> v;
   Gains g;
   uint16_t p;
+  uint8_t format;
   BoardState s;
+  ShortState ss;
+  BoardCounters c;
   BoardInfo i;
   uint8_t a, b;
   if (parse_set_speed(f, &v) || parse_set_pwm(f, &v)) {
     for (double x : v) std::cout << ' ' << x;
   } else if (parse_set_gains(f, &g)) {
     std::cout << " motor=" << int(g.motor) << " kp=" << g.kp << " ki=" << g.ki;
-  } else if (parse_set_stream(f, &p)) {
+  } else if (parse_set_stream(f, &p, &format)) {
     std::cout << " period_ms=" << p;
+    if (f.payload.size() == 3) std::cout << " format=" << int(format);
+  } else if (parse_short_state(f, &ss)) {
+    std::cout << " time_ms=" << ss.time_ms << " status=0x" << std::hex << int(ss.status) << std::dec;
+    for (std::size_t k = 0; k < ss.ticks.size(); ++k)
+      std::cout << " [ticks=" << ss.ticks[k] << " setpoint=" << ss.setpoints[k] << ']';
+  } else if (parse_counters(f, &c)) {
+    std::cout << " since_cmd_ms=" << c.since_cmd_ms << " frames_bad=" << c.frames_bad
+              << " watchdog_trips=" << c.watchdog_trips;
   } else if (parse_state(f, &s)) {
     std::cout << " time_ms=" << s.time_ms << " status=0x" << std::hex << int(s.status) << std::dec
               << " last_seq=" << int(s.last_seq) << " since_cmd_ms=" << s.since_cmd_ms
@@ -98,6 +111,8 @@ int encode(const std::vector<std::string>& a) {
   else if (t == "set_pwm") f = make_set_pwm(seq, v);
   else if (t == "set_gains" && v.size() == 3) f = make_set_gains(seq, Gains{static_cast<uint8_t>(v[0]), v[1], v[2]});
   else if (t == "set_stream" && v.size() == 1) f = make_set_stream(seq, static_cast<uint16_t>(v[0]));
+  else if (t == "set_stream" && v.size() == 2)
+    f = make_set_stream(seq, static_cast<uint16_t>(v[0]), static_cast<uint8_t>(v[1]));
   else if (t == "get_state" && v.empty()) f = make_simple(proto::kGetState, seq);
   else if (t == "heartbeat" && v.empty()) f = make_simple(proto::kHeartbeat, seq);
   else if (t == "get_info" && v.empty()) f = make_simple(proto::kGetInfo, seq);

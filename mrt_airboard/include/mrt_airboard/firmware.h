@@ -62,6 +62,7 @@ class Firmware {
   BoardState state() const;
   BoardInfo info() const;
   const FirmwareConfig& config() const { return c_; }
+  uint8_t stream_format() const { return format_; }
 
  private:
   enum class Mode { kSpeed, kPwm, kBrake };
@@ -82,6 +83,7 @@ class Firmware {
 
   void handle(const Frame& f);
   void reply_state(uint8_t seq);
+  void reply_set(uint8_t seq);  // STATE, or SHORT_STATE in the compact format
   void command_received(uint8_t seq);
   void control(Motor& m);
 
@@ -98,6 +100,8 @@ class Firmware {
   uint32_t trips_ = 0;
   uint8_t last_seq_ = 0;
   uint16_t stream_ms_ = 0;
+  uint8_t format_ = proto::kFormatState;
+  uint32_t streamed_ = 0;
   uint64_t applied_ = 0, rejected_ = 0;
   std::size_t hist_at_ = 0;
 };

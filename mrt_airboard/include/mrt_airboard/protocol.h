@@ -28,12 +28,19 @@ constexpr uint8_t kSetPwm = 0x02;     // u8 n, n x i16 duty [1e-4]
 constexpr uint8_t kSetGains = 0x03;   // u8 motor (0xFF all), i32 kp, i32 ki [Q16.16]
 constexpr uint8_t kGetState = 0x04;   // empty
 constexpr uint8_t kHeartbeat = 0x05;  // empty
-constexpr uint8_t kSetStream = 0x06;  // u16 period [ms], 0 = off
+constexpr uint8_t kSetStream = 0x06;  // u16 period [ms], 0 = off [, u8 format]
 constexpr uint8_t kGetInfo = 0x07;    // empty
 // Board -> PC.
 constexpr uint8_t kState = 0x81;
 constexpr uint8_t kInfo = 0x82;
 constexpr uint8_t kNack = 0x8F;       // u8 rejected type, u8 reason
+constexpr uint8_t kShortState = 0x83; // u16 time, u8 status, n x (i16 count, i16 set-point)
+constexpr uint8_t kCounters = 0x84;   // u16 since_cmd, u16 frames_bad, u16 watchdog_trips
+
+// SET_STREAM formats (optional third payload byte).
+constexpr uint8_t kFormatState = 0;    // stream STATE, answer set commands with STATE
+constexpr uint8_t kFormatCompact = 1;  // stream SHORT_STATE (+ COUNTERS), answer set commands with SHORT_STATE
+constexpr int kCountersEvery = 10;     // compact format: COUNTERS after every 10th streamed SHORT_STATE
 
 // Status bits, per motor and (OR of the motors plus the board's own) global.
 // The low four match mrt_msgs/WheelState's STATUS_* constants.
@@ -119,6 +126,26 @@ struct BoardState {
   std::vector<MotorState> motors;
 };
 
+/// SHORT_STATE payload (compact format, for noisy lines): u16 board time
+/// (low 16 bits of the ms clock), u8 status (global, as STATE), then
+/// n x (i16 encoder count, low 16 bits; i16 set-point in force, mrad/s,
+/// saturated to +-32767): 3 + 4 n bytes, n = (LEN - 3) / 4. The frame's SEQ
+/// is STATE's (request or last applied set command).
+struct ShortState {
+  uint16_t time_ms = 0;
+  uint8_t status = 0;
+  std::vector<int16_t> ticks;     // low 16 bits of the encoder counts
+  std::vector<double> setpoints;  // rad/s
+};
+
+/// COUNTERS payload: u16 since_cmd_ms, u16 frames_bad, u16 watchdog_trips
+/// (as in STATE): 6 bytes.
+struct BoardCounters {
+  uint16_t since_cmd_ms = 0;
+  uint16_t frames_bad = 0;
+  uint16_t watchdog_trips = 0;
+};
+
 /// INFO payload: u8 fw_major, u8 fw_minor, u8 motors, u32 counts_per_rev,
 /// u16 control_hz, u32 pwm_hz, i32 max_speed [mrad/s], u16 watchdog_ms: 19 bytes.
 struct BoardInfo {
@@ -147,7 +174,10 @@ Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds);
 Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties);
 Frame make_set_gains(uint8_t seq, const Gains& g);
 Frame make_simple(uint8_t type, uint8_t seq);  // GET_STATE, HEARTBEAT, GET_INFO
-Frame make_set_stream(uint8_t seq, uint16_t period_ms);
+Frame make_set_stream(uint8_t seq, uint16_t period_ms);  // 2-byte payload (format STATE)
+Frame make_set_stream(uint8_t seq, uint16_t period_ms, uint8_t format);  // 3-byte payload
+Frame make_short_state(uint8_t seq, const BoardState& s);  // the compact view of a STATE
+Frame make_counters(uint8_t seq, const BoardState& s);
 Frame make_state(uint8_t seq, const BoardState& s);
 Frame make_info(uint8_t seq, const BoardInfo& i);
 Frame make_nack(uint8_t seq, uint8_t type, uint8_t reason);
@@ -158,7 +188,9 @@ Frame make_nack(uint8_t seq, uint8_t type, uint8_t reason);
 bool parse_set_speed(const Frame& f, std::vector<double>* speeds);
 bool parse_set_pwm(const Frame& f, std::vector<double>* duties);
 bool parse_set_gains(const Frame& f, Gains* g);
-bool parse_set_stream(const Frame& f, uint16_t* period_ms);
+bool parse_set_stream(const Frame& f, uint16_t* period_ms, uint8_t* format = nullptr);  // format 0 when absent
+bool parse_short_state(const Frame& f, ShortState* s);
+bool parse_counters(const Frame& f, BoardCounters* c);
 bool parse_state(const Frame& f, BoardState* s);
 bool parse_info(const Frame& f, BoardInfo* i);
 bool parse_nack(const Frame& f, uint8_t* type, uint8_t* reason);

@@ -20,6 +20,17 @@ class StateTracker {
   /// streamed frame of the same millisecond) or has a different motor count
   /// than the first one; the tracker is then unchanged.
   bool update(const BoardState& s, double host_time);
+  /// Feeds a SHORT_STATE (16-bit clock and counts, unwrapped by modular
+  /// differences against the last update). When more than `max_gap_ms` of
+  /// board time passed since the last update, a 16-bit count difference is
+  /// ambiguous: the counts are re-based on this frame (as after reset(), but
+  /// the board clock stays continuous) and rebased() is true until the next
+  /// update. Returns false as update() does.
+  bool update_short(const ShortState& s, double host_time, uint32_t max_gap_ms);
+  /// True when the last successful update restarted the counts (first update
+  /// after reset(), or a SHORT_STATE after too long a gap): the caller's
+  /// odometry must take a new reference.
+  bool rebased() const { return rebased_; }
   /// Forgets everything (after a reconnection the board may have restarted).
   void reset() { have_ = false; }
 
@@ -33,7 +44,10 @@ class StateTracker {
 
  private:
   double drift_;
+  bool advance(uint32_t dms, double host_time);
   bool have_ = false;
+  bool rebased_ = false;
+  bool full_ = false;  // raw_ and last_ms_ hold all 32 bits (a STATE was seen since the last re-base)
   std::vector<int64_t> counts_;
   std::vector<uint32_t> raw_;
   uint32_t last_ms_ = 0;
