@@ -8,7 +8,7 @@
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 GUI=0
-NAME=demo
+NAME=roby
 for arg in "$@"; do
   case "$arg" in
     --gui) GUI=1 ;;
