@@ -1,22 +1,24 @@
 // Kinematics of the AIRLab robot bases: the processing sub-module of
-// AIRBoard (manual chapter 5, section 2.1). ROS-free.
+// AIRBoard (manual chapter 5, section 2.1). ROS-free. The inverse and
+// forward kinematics, the saturation and the preset geometries live once in
+// mrt_common/base_kinematics.h (shared with mrt_sim); this header adds the
+// board's own limits (acceleration, dead-band, encoder resolution) and the
+// parameter validation.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "mrt_common/base_kinematics.h"
+
 namespace mrt::airboard {
 
 /// Body-frame velocity (REP-103): vx forward, vy left (m/s), omega
 /// counter-clockwise (rad/s).
-struct Twist2D {
-  double vx = 0.0;
-  double vy = 0.0;
-  double omega = 0.0;
-};
+using Twist2D = mrt::common::Twist2D;
 
-enum class BaseType { kDifferential, kOmni };
+using BaseType = mrt::common::BaseType;
 
 /// Geometry and limits of one base, validated by validate().
 ///
@@ -25,7 +27,8 @@ enum class BaseType { kDifferential, kOmni };
 /// Omni: wheel i sits at `wheel_angles[i]` (rad, from the body x axis) at
 /// `wheel_distance` from the centre and drives along (-sin a, cos a): its
 /// angular speed is w_i = (-sin(a) vx + cos(a) vy + L omega) / r (the
-/// convention of mrt_sim and of mrt_msgs/WheelCommand).
+/// convention of mrt_common/base_kinematics.h, mrt_sim and
+/// mrt_msgs/WheelCommand).
 struct BaseParams {
   std::string name = "ianus3";
   BaseType type = BaseType::kDifferential;
@@ -46,10 +49,12 @@ struct BaseParams {
   void validate() const;
 };
 
-/// The presets of the manual's robots: "ianus3" (differential, r 0.05 m,
-/// track 0.38 m, 1.2 m/s), "triskar" (three omni wheels at 90/210/330 deg),
-/// "omni4" (four omni wheels at 45/135/225/315 deg). Same geometry as
-/// mrt_sim's presets. Throws std::invalid_argument for an unknown name.
+/// The presets of the manual's robots, from mrt::common::base_presets():
+/// "ianus3" (differential, r 0.05 m, track 0.38 m, 1.2 m/s), "p3at"
+/// (differential, r 0.11 m, track 0.40 m), "triskar" (three omni wheels at
+/// 90/210/330 deg), "omni4" (four omni wheels at 45/135/225/315 deg); the
+/// board's own limits keep their defaults. Throws std::invalid_argument for
+/// an unknown name.
 BaseParams base_preset(const std::string& name);
 
 /// Parses "differential" / "omni".
@@ -95,14 +100,14 @@ class OmniKinematics : public BaseKinematics {
  private:
   double r_, dist_;
   std::vector<double> angles_;
-  std::vector<double> pinv_;  // 3 x n pseudo-inverse of the n x 3 Jacobian, row major
 };
 
 std::unique_ptr<BaseKinematics> make_kinematics(const BaseParams& p);
 
-/// Scales the whole vector so that no |w_i| exceeds `max_abs`, keeping the
-/// direction of motion. Returns the scale applied (1 when nothing changed).
-double saturate_preserving_direction(std::vector<double>& w, double max_abs);
+/// Scales the whole vector so that no |w_i| exceeds `max_abs` (0 = no
+/// limit), keeping the direction of motion. Returns the scale applied (1 when
+/// nothing changed).
+using mrt::common::saturate_preserving_direction;
 
 /// Turns a requested twist into wheel set-points: dead-band on the twist,
 /// inverse kinematics, saturation that preserves the direction of motion,
