@@ -1,16 +1,14 @@
 #include "mrt_dcdt_bridge/bridge_mapping.h"
 
-#include <yaml-cpp/yaml.h>
-
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "mrt_common/parse_error.h"
+#include "mrt_common/yaml_reader.h"
 
 namespace mrt::dcdt {
 
 using mrt::common::ParseError;
+using mrt::common::YamlReader;
 
 const char* KindName(PayloadKind k) {
   switch (k) {
@@ -24,62 +22,57 @@ const char* KindName(PayloadKind k) {
 
 namespace {
 
-[[noreturn]] void Fail(const std::string& file, const YAML::Node& n, const std::string& msg) {
-  const auto m = n.Mark();
-  throw ParseError(file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0, msg);
-}
-
-std::string Scalar(const std::string& file, const YAML::Node& entry, const char* key, bool required,
+std::string Scalar(const YamlReader& r, const YAML::Node& entry, const char* key, bool required,
                    const std::string& def = "") {
   const YAML::Node v = entry[key];
   if (!v) {
-    if (required) Fail(file, entry, std::string("missing '") + key + "'");
+    if (required) r.fail(entry, std::string("missing '") + key + "'");
     return def;
   }
-  if (!v.IsScalar()) Fail(file, v, std::string("'") + key + "' must be a scalar");
+  if (!v.IsScalar()) r.fail(v, std::string("'") + key + "' must be a scalar");
   return v.as<std::string>();
 }
 
-std::vector<TopicMapping> ParseList(const std::string& file, const YAML::Node& list, bool to_ros) {
+std::vector<TopicMapping> ParseList(const YamlReader& r, const YAML::Node& list, bool to_ros) {
   std::vector<TopicMapping> out;
   if (!list) return out;
-  if (!list.IsSequence()) Fail(file, list, std::string(to_ros ? "to_ros" : "to_dcdt") + " must be a list");
+  if (!list.IsSequence()) r.fail(list, std::string(to_ros ? "to_ros" : "to_dcdt") + " must be a list");
   std::set<std::string> topics;
   std::set<int> types;
   for (const auto& e : list) {
-    if (!e.IsMap()) Fail(file, e, "expected a mapping with type, topic and kind");
+    if (!e.IsMap()) r.fail(e, "expected a mapping with type, topic and kind");
     for (const auto& kv : e) {
       const std::string k = kv.first.as<std::string>();
       if (k != "type" && k != "topic" && k != "kind" && k != (to_ros ? "scope" : "warranty"))
-        Fail(file, kv.first, "unknown key '" + k + "'");
+        r.fail(kv.first, "unknown key '" + k + "'");
     }
     TopicMapping m;
     m.line = e.Mark().line + 1;
-    const std::string type = Scalar(file, e, "type", true);
+    const std::string type = Scalar(r, e, "type", true);
     m.type = MsgTypeFromName(type.c_str());
-    if (m.type < 0) Fail(file, e["type"], "unknown DCDT message type '" + type + "'");
-    m.topic = Scalar(file, e, "topic", true);
-    if (m.topic.empty()) Fail(file, e["topic"], "empty topic");
-    const std::string kind = Scalar(file, e, "kind", false, "percept");
+    if (m.type < 0) r.fail(e["type"], "unknown DCDT message type '" + type + "'");
+    m.topic = Scalar(r, e, "topic", true);
+    if (m.topic.empty()) r.fail(e["topic"], "empty topic");
+    const std::string kind = Scalar(r, e, "kind", false, "percept");
     if (kind == "percept") m.kind = PayloadKind::PERCEPT;
     else if (kind == "crisp_data") m.kind = PayloadKind::CRISP_DATA;
     else if (kind == "commands") m.kind = PayloadKind::COMMANDS;
     else if (kind == "raw") m.kind = PayloadKind::RAW;
-    else Fail(file, e["kind"], "kind must be percept, crisp_data, commands or raw, got '" + kind + "'");
+    else r.fail(e["kind"], "kind must be percept, crisp_data, commands or raw, got '" + kind + "'");
     if (to_ros) {
-      const std::string s = Scalar(file, e, "scope", false, "all");
+      const std::string s = Scalar(r, e, "scope", false, "all");
       if (s == "local") m.scope = DCDT_LOCAL_MSG;
       else if (s == "remote") m.scope = DCDT_REMOTE_MSG;
       else if (s == "all") m.scope = DCDT_ALL_MSG;
-      else Fail(file, e["scope"], "scope must be local, remote or all, got '" + s + "'");
-      if (!types.insert(m.type).second) Fail(file, e["type"], "type " + type + " mapped twice in to_ros");
+      else r.fail(e["scope"], "scope must be local, remote or all, got '" + s + "'");
+      if (!types.insert(m.type).second) r.fail(e["type"], "type " + type + " mapped twice in to_ros");
     } else {
-      const std::string w = Scalar(file, e, "warranty", false, "guaranteed");
+      const std::string w = Scalar(r, e, "warranty", false, "guaranteed");
       if (w == "none") m.warranty = DCDT_DW_NONE;
       else if (w == "retransmit") m.warranty = DCDT_DW_RETRANSMIT;
       else if (w == "guaranteed") m.warranty = DCDT_DW_GUARANTEED;
-      else Fail(file, e["warranty"], "warranty must be none, retransmit or guaranteed, got '" + w + "'");
-      if (!topics.insert(m.topic).second) Fail(file, e["topic"], "topic " + m.topic + " mapped twice in to_dcdt");
+      else r.fail(e["warranty"], "warranty must be none, retransmit or guaranteed, got '" + w + "'");
+      if (!topics.insert(m.topic).second) r.fail(e["topic"], "topic " + m.topic + " mapped twice in to_dcdt");
     }
     out.push_back(m);
   }
@@ -89,35 +82,26 @@ std::vector<TopicMapping> ParseList(const std::string& file, const YAML::Node& l
 }  // namespace
 
 BridgeMapping ParseBridgeMapping(const std::string& text, const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw ParseError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, e.mark.column >= 0 ? e.mark.column + 1 : 0,
-                     e.msg);
-  }
+  const YamlReader r(file);
+  const YAML::Node root = r.load(text);
   if (!root.IsMap()) throw ParseError(file, 1, 0, "expected a mapping with 'to_ros' and/or 'to_dcdt'");
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
-    if (k != "to_ros" && k != "to_dcdt") Fail(file, kv.first, "unknown key '" + k + "' (expected to_ros, to_dcdt)");
+    if (k != "to_ros" && k != "to_dcdt") r.fail(kv.first, "unknown key '" + k + "' (expected to_ros, to_dcdt)");
   }
   BridgeMapping m;
   try {
-    m.to_ros = ParseList(file, root["to_ros"], true);
-    m.to_dcdt = ParseList(file, root["to_dcdt"], false);
+    m.to_ros = ParseList(r, root["to_ros"], true);
+    m.to_dcdt = ParseList(r, root["to_dcdt"], false);
   } catch (const YAML::Exception& e) {
-    throw ParseError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
+    throw r.error(e);
   }
   if (m.to_ros.empty() && m.to_dcdt.empty()) throw ParseError(file, 1, 0, "nothing mapped");
   return m;
 }
 
 BridgeMapping LoadBridgeMapping(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw ParseError(path, 0, 0, "cannot read the mapping file");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ParseBridgeMapping(ss.str(), path);
+  return ParseBridgeMapping(mrt::common::read_file(path, "cannot read the mapping file"), path);
 }
 
 }  // namespace mrt::dcdt

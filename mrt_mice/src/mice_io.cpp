@@ -1,80 +1,63 @@
 #include "mrt_mice/mice_io.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <map>
-#include <sstream>
 
 #include "mrt_common/angle.h"
 #include "mrt_common/csv.h"
+#include "mrt_common/yaml_reader.h"
 
 namespace mrt::mice {
 
 using mrt::common::CsvReader;
 using mrt::common::ParseError;
+using mrt::common::YamlReader;
 
 namespace {
 
-ParseError error_at(const std::string& file, const YAML::Node& n, const std::string& msg) {
-  const YAML::Mark m = n.Mark();
-  return ParseError(file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0, msg);
-}
-
-double number(const std::string& file, const YAML::Node& parent, const std::string& key,
-              bool required, double fallback) {
+double number(const YamlReader& r, const YAML::Node& parent, const std::string& key, bool required,
+              double fallback) {
   const YAML::Node n = parent[key];
   if (!n) {
-    if (required) throw error_at(file, parent, "expected a key '" + key + "'");
+    if (required) r.fail(parent, "expected a key '" + key + "'");
     return fallback;
   }
-  if (!n.IsScalar()) throw error_at(file, n, "expected a number for '" + key + "'");
+  if (!n.IsScalar()) r.fail(n, "expected a number for '" + key + "'");
   double v;
-  try {
-    v = n.as<double>();
-  } catch (const YAML::Exception&) {
-    throw error_at(file, n, "expected a number for '" + key + "', got '" + n.Scalar() + "'");
-  }
-  if (!std::isfinite(v)) throw error_at(file, n, "expected a finite number for '" + key + "'");
+  if (!YamlReader::decode(n, v)) r.fail(n, "expected a number for '" + key + "', got '" + n.Scalar() + "'");
+  if (!std::isfinite(v)) r.fail(n, "expected a finite number for '" + key + "'");
   return v;
 }
 
-MouseParams mouse(const std::string& file, const YAML::Node& root, const std::string& key) {
+MouseParams mouse(const YamlReader& r, const YAML::Node& root, const std::string& key) {
   const YAML::Node n = root[key];
-  if (!n) throw error_at(file, root, "expected a key '" + key + "' (the " + key + " mouse)");
-  if (!n.IsMap()) throw error_at(file, n, "expected a map {x, y, yaw, counts_per_m} for '" + key + "'");
+  if (!n) r.fail(root, "expected a key '" + key + "' (the " + key + " mouse)");
+  if (!n.IsMap()) r.fail(n, "expected a map {x, y, yaw, counts_per_m} for '" + key + "'");
   for (const auto& kv : n) {
     const std::string k = kv.first.Scalar();
     if (k != "x" && k != "y" && k != "yaw" && k != "counts_per_m")
-      throw error_at(file, kv.first, "unknown key '" + k + "' in '" + key +
-                                         "' (expected x, y, yaw, counts_per_m)");
+      r.fail(kv.first, "unknown key '" + k + "' in '" + key + "' (expected x, y, yaw, counts_per_m)");
   }
   MouseParams m;
-  m.mount = Pose2D(number(file, n, "x", true, 0), number(file, n, "y", true, 0),
-                   number(file, n, "yaw", false, 0.0));
-  m.counts_per_m = number(file, n, "counts_per_m", true, 0);
-  if (!(m.counts_per_m > 0.0))
-    throw error_at(file, n["counts_per_m"], "expected counts_per_m > 0");
+  m.mount = Pose2D(number(r, n, "x", true, 0), number(r, n, "y", true, 0), number(r, n, "yaw", false, 0.0));
+  m.counts_per_m = number(r, n, "counts_per_m", true, 0);
+  if (!(m.counts_per_m > 0.0)) r.fail(n["counts_per_m"], "expected counts_per_m > 0");
   return m;
 }
 
 }  // namespace
 
 MiceParams parse_params(const std::string& text, const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
-  }
+  const YamlReader r(file);
+  const YAML::Node root = r.load(text);
   if (!root.IsMap()) throw ParseError(file, 1, 1, "expected a map with keys 'left' and 'right'");
   MiceParams p;
-  p.left = mouse(file, root, "left");
-  p.right = mouse(file, root, "right");
-  p.detection_factor = number(file, root, "detection_factor", false, p.detection_factor);
-  p.detection_relative = number(file, root, "detection_relative", false, p.detection_relative);
+  p.left = mouse(r, root, "left");
+  p.right = mouse(r, root, "right");
+  p.detection_factor = number(r, root, "detection_factor", false, p.detection_factor);
+  p.detection_relative = number(r, root, "detection_relative", false, p.detection_relative);
   try {
     p.validate();
   } catch (const std::invalid_argument& e) {
@@ -84,11 +67,7 @@ MiceParams parse_params(const std::string& text, const std::string& file) {
 }
 
 MiceParams load_params(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(path, 0, 0, "cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_params(ss.str(), path);
+  return parse_params(mrt::common::read_file(path), path);
 }
 
 void write_params(std::ostream& out, const MiceParams& p, const CalibrationResult* calib) {

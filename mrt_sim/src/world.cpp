@@ -1,27 +1,14 @@
 // World geometry helpers and the YAML world-file loader.
 #include "mrt_sim/world.h"
 
-// yaml-cpp 0.7's node/impl.h trips GCC 12's -Wdangling-pointer at -O2 (a
-// false positive in the library's header, not in this file).
-#if defined(__GNUC__) && __GNUC__ >= 12 && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdangling-pointer"
-#endif
-#include <yaml-cpp/yaml.h>
-#if defined(__GNUC__) && __GNUC__ >= 12 && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
-
 #include <cmath>
-#include <fstream>
-#include <initializer_list>
 #include <limits>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include "mrt_common/angle.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_common/yaml_reader.h"
 
 namespace mrt::sim {
 
@@ -63,127 +50,25 @@ double distance_to_segment(const Point2D& p, const Segment& s, Point2D* closest)
 namespace {
 
 using YAML::Node;
-using Keys = std::initializer_list<const char*>;
 
-// Reads YAML nodes into the world structs; every error names the node.
-class Loader {
+// Reads YAML nodes into the world structs; every error names the node
+// (the strict readers: mrt_common/yaml_reader.h).
+class Loader : private mrt::common::YamlReader {
  public:
-  explicit Loader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const Node& n, const std::string& msg) const {
-    const YAML::Mark m = n.Mark();
-    throw ParseError(file_, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0, msg);
-  }
-
-  // Rejects anything but a map whose keys are all in `allowed`, each once.
-  void map(const Node& n, const std::string& what, Keys allowed) const {
-    if (!n.IsMap()) fail(n, "expected a map for '" + what + "'");
-    std::set<std::string> seen;
-    for (auto it = n.begin(); it != n.end(); ++it) {
-      const Node k = it->first;  // a copy: the iterator yields a temporary
-      if (!k.IsScalar()) fail(k, "expected a key name in '" + what + "'");
-      const std::string key = k.Scalar();
-      bool ok = false;
-      std::string list;
-      for (const char* a : allowed) {
-        ok = ok || key == a;
-        list += (list.empty() ? "" : ", ") + std::string(a);
-      }
-      if (!ok) fail(k, "unknown key '" + key + "' in '" + what + "' (expected one of: " + list + ")");
-      if (!seen.insert(key).second) fail(k, "duplicate key '" + key + "' in '" + what + "'");
-    }
-  }
-
-  Node required(const Node& m, const char* key, const std::string& what) const {
-    const Node n = m[key];
-    if (!n) fail(m, "missing required key '" + std::string(key) + "' in '" + what + "'");
-    return n;
-  }
-
-  double number(const Node& n, const std::string& key) const {
-    double v = 0.0;
-    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
-      fail(n, "expected a number for '" + key + "'");
-    return v;
-  }
-
-  double number(const Node& m, const char* key, double def) const {
-    const Node n = m[key];
-    return n ? number(n, key) : def;
-  }
-
-  // A number with a lower bound (strict or not) and an optional upper one.
-  double bounded(const Node& m, const char* key, double def, double lo, bool strict,
-                 double hi = INFINITY) const {
-    const Node n = m[key];
-    if (!n) return def;
-    const double v = number(n, key);
-    if ((strict ? v <= lo : v < lo) || v > hi) {
-      std::ostringstream os;
-      os << "expected '" << key << "' " << (strict ? "> " : ">= ") << lo;
-      if (std::isfinite(hi)) os << " and <= " << hi;
-      os << ", got " << v;
-      fail(n, os.str());
-    }
-    return v;
-  }
-  double positive(const Node& m, const char* key, double def) const {
-    return bounded(m, key, def, 0.0, true);
-  }
-  double non_negative(const Node& m, const char* key, double def) const {
-    return bounded(m, key, def, 0.0, false);
-  }
-  double fraction(const Node& m, const char* key, double def) const {
-    return bounded(m, key, def, 0.0, false, 1.0);
-  }
-
-  std::string text(const Node& m, const char* key, const std::string& def, bool req,
-                   const std::string& what) const {
-    const Node n = req ? required(m, key, what) : m[key];
-    if (!n) return def;
-    if (!n.IsScalar()) fail(n, "expected a string for '" + std::string(key) + "'");
-    return n.Scalar();
-  }
-
-  bool boolean(const Node& m, const char* key, bool def) const {
-    const Node n = m[key];
-    bool v = def;
-    if (n && (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)))
-      fail(n, "expected true or false for '" + std::string(key) + "'");
-    return v;
-  }
-
-  // Upper bounds keep a hostile file from asking for unbounded memory.
-  long long integer(const Node& n, const std::string& key, long long lo, long long hi) const {
-    long long v = 0;
-    if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v) || v < lo || v > hi)
-      fail(n, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] for '" + key + "'");
-    return v;
-  }
-
-  std::vector<double> numbers(const Node& n, const std::string& key, std::size_t count) const {
-    const std::string want = "expected a list of " + std::to_string(count) + " numbers for '" + key + "'";
-    if (!n.IsSequence() || n.size() != count) fail(n, want);
-    std::vector<double> v;
-    for (const Node& e : n) v.push_back(number(e, key));
-    return v;
-  }
-
-  const Node& sequence(const Node& n, const std::string& key) const {
-    if (!n.IsSequence()) fail(n, "expected a list for '" + key + "'");
-    return n;
-  }
+  using YamlReader::YamlReader;
+  using YamlReader::error;
+  using YamlReader::load;
 
   World world(const Node& root) const {
     if (!root.IsMap()) {
-      if (root.IsNull()) throw ParseError(file_, 1, 1, "expected a map at the top level, got an empty document");
+      if (root.IsNull()) throw ParseError(file(), 1, 1, "expected a map at the top level, got an empty document");
       fail(root, "expected a map at the top level");
     }
     map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
                         "movers", "robots"});
     World w;
-    w.file = file_;
-    w.name = text(root, "name", "", true, "world");
+    w.file = file();
+    w.name = string(root, "name", "", true, "world");
     if (const Node n = root["seed"]) w.seed = static_cast<std::uint64_t>(integer(n, "seed", 0, std::numeric_limits<long long>::max()));
     const Node bn = required(root, "bounds", "world");
     const auto b = numbers(bn, "bounds", 4);
@@ -241,9 +126,9 @@ class Loader {
   Post post(const Node& n) const {
     map(n, "posts", {"name", "class", "color", "x", "y", "radius"});
     Post p;
-    p.name = text(n, "name", "", true, "posts");
-    p.membership_class = text(n, "class", "Obstacle", false, "posts");
-    p.color = text(n, "color", "", false, "posts");
+    p.name = string(n, "name", "", true, "posts");
+    p.membership_class = string(n, "class", "Obstacle", false, "posts");
+    p.color = string(n, "color", "", false, "posts");
     p.center = {number(required(n, "x", "posts"), "x"), number(required(n, "y", "posts"), "y")};
     p.radius = positive(n, "radius", p.radius);
     return p;
@@ -252,8 +137,8 @@ class Loader {
   Goal goal(const Node& n) const {
     map(n, "goals", {"name", "color", "x", "y", "theta", "width", "depth"});
     Goal g;
-    g.name = text(n, "name", "", true, "goals");
-    g.color = text(n, "color", "", false, "goals");
+    g.name = string(n, "name", "", true, "goals");
+    g.color = string(n, "color", "", false, "goals");
     g.pose = Pose2D(number(required(n, "x", "goals"), "x"), number(required(n, "y", "goals"), "y"),
                     deg_to_rad(number(n, "theta", 0.0)));
     g.width = positive(n, "width", g.width);
@@ -270,18 +155,18 @@ class Loader {
     b.radius = positive(n, "radius", b.radius);
     b.friction = non_negative(n, "friction", b.friction);
     b.restitution = fraction(n, "restitution", b.restitution);
-    b.color = text(n, "color", b.color, false, "ball");
+    b.color = string(n, "color", b.color, false, "ball");
     return b;
   }
 
   Mover mover(const Node& n) const {
     map(n, "movers", {"name", "class", "color", "radius", "speed", "loop", "waypoints"});
     Mover m;
-    m.name = text(n, "name", "", true, "movers");
-    m.membership_class = text(n, "class", "Person", false, "movers");
+    m.name = string(n, "name", "", true, "movers");
+    m.membership_class = string(n, "class", "Person", false, "movers");
     if (m.membership_class != "Person" && m.membership_class != "Robot")
       fail(n["class"], "expected 'class' Person or Robot, got '" + m.membership_class + "'");
-    m.color = text(n, "color", "", false, "movers");
+    m.color = string(n, "color", "", false, "movers");
     m.radius = positive(n, "radius", m.radius);
     m.speed = non_negative(n, "speed", m.speed);
     m.loop = boolean(n, "loop", m.loop);
@@ -304,15 +189,15 @@ class Loader {
   RobotConfig robot(const Node& n) const {
     map(n, "robots", {"name", "base", "base_overrides", "color", "pose", "sensors"});
     RobotConfig r;
-    r.name = text(n, "name", "", true, "robots");
+    r.name = string(n, "name", "", true, "robots");
     const Node bn = required(n, "base", "robots");
     try {
-      r.base = base_preset(text(n, "base", "", true, "robots"));
+      r.base = base_preset(string(n, "base", "", true, "robots"));
     } catch (const std::invalid_argument& e) {
       fail(bn, e.what());
     }
     if (const Node o = n["base_overrides"]) overrides(o, r.base);
-    r.color = text(n, "color", r.color, false, "robots");
+    r.color = string(n, "color", r.color, false, "robots");
     const auto p = numbers(required(n, "pose", "robots"), "pose", 3);
     r.initial_pose = Pose2D(p[0], p[1], deg_to_rad(p[2]));
     r.sensors = sensors(n["sensors"], r.base);
@@ -428,34 +313,22 @@ class Loader {
       fail(n, "missing required key 'count' or 'mounts' in 'sonar'");
     }
   }
-
- private:
-  std::string file_;
 };
 
 }  // namespace
 
 World parse_world(const std::string& yaml_text, const std::string& file) {
-  Node root;
+  const Loader loader(file);
+  const Node root = loader.load(yaml_text, "YAML syntax error: ");
   try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax error: " + e.msg);
-  }
-  try {
-    return Loader(file).world(root);
+    return loader.world(root);
   } catch (const YAML::Exception& e) {  // a conversion not caught above: still name the place
-    throw ParseError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0,
-                     e.mark.column >= 0 ? e.mark.column + 1 : 0, e.msg);
+    throw loader.error(e);
   }
 }
 
 World load_world(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(path, 0, 0, "cannot open world file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_world(ss.str(), path);
+  return parse_world(mrt::common::read_file(path, "cannot open world file"), path);
 }
 
 }  // namespace mrt::sim
