@@ -61,6 +61,8 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   // Backing away is still allowed.
   drive(obs, remote, -0.2, 0.0, 3.0);
   EXPECT_LT(obs.x_, x_stopped - 0.2) << "did not back away";
+  RecordProperty("stopped_at_x", std::to_string(x_stopped));
+  RecordProperty("min_clearance_m", std::to_string(obs.min_clearance_));
   std::printf("manual: stopped at x = %.2f, min clearance %.3f m (%s)\n", x_stopped, obs.min_clearance_,
               obs.nearest_.c_str());
 }

@@ -49,6 +49,8 @@ TEST(RobyReplan, TimeoutAbortAndReplanFromCurrentPose) {
            std::fabs(obs.last_.goal_x - 8.0) < 1e-9;
   }, 5.0, 20.0)) << "the new plan was not taken up";
   EXPECT_EQ(obs.last_.replans, 1u);
+  RecordProperty("failed_after_s", std::to_string(failed.elapsed));
+  RecordProperty("request_error_m", std::to_string(std::hypot(r.x - truth_x_at_request, r.y - truth_y_at_request)));
 }
 
 int main(int argc, char** argv) {

@@ -25,6 +25,8 @@ TEST(RobyRoute, ReachesEveryPathPointWithClearance) {
   EXPECT_LT(took, limit);
   EXPECT_GE(obs.min_clearance_, min_clearance) << "nearest: " << obs.nearest_;
   EXPECT_GT(obs.truths_, 1000u);
+  RecordProperty("sim_seconds", std::to_string(took));
+  RecordProperty("min_clearance_m", std::to_string(obs.min_clearance_));
   std::printf("route: %u path points in %.1f s of sim time, min clearance %.3f m (%s)\n", obs.last_.reached,
               took, obs.min_clearance_, obs.nearest_.c_str());
 }
