@@ -3,8 +3,10 @@
 # (under Xvfb unless --gui is given and a display exists), saves an rviz
 # screenshot to build/demo/rviz.png and a bag to build/demo/demo.bag, and
 # prints a summary.
-#   ./scripts/demo.sh [--gui] [NAME]    NAME: a launch file in launch/ (default: demo)
-#   DURATION=<s>  simulated seconds to record (default 30)
+#   ./scripts/demo.sh [--gui] [NAME]    NAME: a launch file in launch/ (default: roby;
+#                                       "demo" is the figure eight on the MSL field)
+#   DURATION=<s>  simulated seconds to record (default: 140 for roby, the whole
+#                 route; 30 otherwise)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 GUI=0
@@ -12,13 +14,16 @@ NAME=roby
 for arg in "$@"; do
   case "$arg" in
     --gui) GUI=1 ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
     *) NAME="$arg" ;;
   esac
 done
 LAUNCH="$ROOT/launch/$NAME.launch"
 [ -f "$LAUNCH" ] || { echo "demo: no launch file $LAUNCH" >&2; exit 2; }
-DURATION="${DURATION:-30}"
+case "$NAME" in
+  roby) DURATION="${DURATION:-140}" ;;
+  *) DURATION="${DURATION:-30}" ;;
+esac
 
 ensure_setup
 build_workspace
