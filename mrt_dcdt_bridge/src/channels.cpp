@@ -28,6 +28,19 @@ constexpr int kGiveUp = -2;
 constexpr size_t kMaxOutQueue = 200000;
 constexpr size_t kMaxUdpFrame = 60000;
 
+// Appends to a link's outbound queue, dropping (and counting) the oldest
+// message when it is full. Returns whether the queue was empty, i.e. whether
+// the link's thread needs a wake-up. The caller holds the queue's lock.
+bool PushBounded(std::deque<MsgPtr>& q, const MsgPtr& m, std::atomic<uint64_t>& dropped) {
+  if (q.size() >= kMaxOutQueue) {
+    q.pop_front();
+    ++dropped;
+  }
+  const bool was_empty = q.empty();
+  q.push_back(m);
+  return was_empty;
+}
+
 struct Counters {
   std::atomic<uint64_t> sent{0}, received{0}, resent{0}, dropped{0}, errors{0}, reconnects{0};
   std::atomic<bool> connected{false};
@@ -64,12 +77,7 @@ class StreamLink {
     bool was_empty;
     {
       std::lock_guard<std::mutex> l(mu_);
-      if (outq_.size() >= kMaxOutQueue) {
-        outq_.pop_front();
-        ++c.dropped;
-      }
-      was_empty = outq_.empty();
-      outq_.push_back(m);
+      was_empty = PushBounded(outq_, m, c.dropped);
     }
     // The thread drains the whole queue: only the first message needs a wake-up.
     if (was_empty) waker_.Wake();
@@ -234,12 +242,7 @@ class UdpLink {
     bool was_empty;
     {
       std::lock_guard<std::mutex> l(mu_);
-      if (outq_.size() >= kMaxOutQueue) {
-        outq_.pop_front();
-        ++c.dropped;
-      }
-      was_empty = outq_.empty();
-      outq_.push_back(m);
+      was_empty = PushBounded(outq_, m, c.dropped);
     }
     // The thread drains the whole queue: only the first message needs a wake-up.
     if (was_empty) waker_.Wake();
