@@ -36,9 +36,14 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   ASSERT_TRUE(obs.wait([&] { return obs.truths_ > 0 && obs.last_.mode == "manual"; }, 20.0, 60.0))
       << "not in manual mode";
   // The planner's path point (3, 0) is ahead, but in Manual nothing drives
-  // there on its own: the robot stands still without remote commands.
+  // there on its own: the robot stands still without remote commands. (The
+  // sequencer starts in Auto, so it may have crept forward before the mode
+  // message arrived: let that motion die out, then measure.)
+  obs.wait([] { return false; }, 1.0, 30.0);
+  const double x_manual = obs.x_;
+  EXPECT_LT(x_manual, 0.2) << "drove off before Manual took over";
   obs.wait([] { return false; }, 2.0, 30.0);
-  EXPECT_NEAR(obs.x_, 0.0, 0.02);
+  EXPECT_NEAR(obs.x_, x_manual, 0.02);
   EXPECT_EQ(obs.last_.reached, 0u);
 
   // Follows the remote: forward and left, then forward and right.
