@@ -3,6 +3,8 @@
 #include <geometry_msgs/Twist.h>
 #include <std_msgs/String.h>
 
+#include <cmath>
+
 #include "rostest_util.h"
 
 namespace {
@@ -28,22 +30,14 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   std::string world;
   ASSERT_TRUE(pnh.getParam("world", world));
   roby_test::Observer obs(world);
-  ros::Publisher mode = nh.advertise<std_msgs::String>("mode", 1, true);
   ros::Publisher remote = nh.advertise<geometry_msgs::Twist>("remote_cmd", 10);
-  std_msgs::String m;
-  m.data = "manual";
-  mode.publish(m);
   ASSERT_TRUE(obs.wait([&] { return obs.truths_ > 0 && obs.last_.mode == "manual"; }, 20.0, 60.0))
       << "not in manual mode";
-  // The planner's path point (3, 0) is ahead, but in Manual nothing drives
-  // there on its own: the robot stands still without remote commands. (The
-  // sequencer starts in Auto, so it may have crept forward before the mode
-  // message arrived: let that motion die out, then measure.)
-  obs.wait([] { return false; }, 1.0, 30.0);
-  const double x_manual = obs.x_;
-  EXPECT_LT(x_manual, 0.2) << "drove off before Manual took over";
-  obs.wait([] { return false; }, 2.0, 30.0);
-  EXPECT_NEAR(obs.x_, x_manual, 0.02);
+  // The sequencer starts in Manual (~mode): the planner's path point (3, 0)
+  // is ahead, but nothing drives there on its own: without remote commands
+  // the robot stands still.
+  obs.wait([] { return false; }, 3.0, 30.0);
+  EXPECT_LT(std::hypot(obs.x_, obs.y_), 0.02) << "drove off without a remote command";
   EXPECT_EQ(obs.last_.reached, 0u);
 
   // Follows the remote: forward and left, then forward and right.
@@ -66,6 +60,13 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   // Backing away is still allowed.
   drive(obs, remote, -0.2, 0.0, 3.0);
   EXPECT_LT(obs.x_, x_stopped - 0.2) << "did not back away";
+
+  // The operator hands the robot back to Mr. BRIAN.
+  ros::Publisher mode = nh.advertise<std_msgs::String>("mode", 1, true);
+  std_msgs::String m;
+  m.data = "auto";
+  mode.publish(m);
+  EXPECT_TRUE(obs.wait([&] { return obs.last_.mode == "auto"; }, 5.0, 30.0)) << "did not switch to auto";
   RecordProperty("stopped_at_x", std::to_string(x_stopped));
   RecordProperty("min_clearance_m", std::to_string(obs.min_clearance_));
   std::printf("manual: stopped at x = %.2f, min clearance %.3f m (%s)\n", x_stopped, obs.min_clearance_,

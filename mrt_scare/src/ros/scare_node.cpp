@@ -26,6 +26,12 @@ double yaw(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
 
+std::optional<Mode> parse_mode(const std::string& s) {
+  if (s == "auto") return Mode::kAuto;
+  if (s == "manual") return Mode::kManual;
+  return std::nullopt;
+}
+
 uint8_t state_code(SequencerState s) {
   switch (s) {
     case SequencerState::kIdle: return mrt_msgs::TaskStatus::IDLE;
@@ -39,10 +45,11 @@ uint8_t state_code(SequencerState s) {
 
 class ScareNode {
  public:
-  ScareNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, SequencerOptions options, double rate,
+  ScareNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, SequencerOptions options, Mode mode, double rate,
             double remote_timeout, double pose_timeout, const std::string& frame)
       : seq_(std::move(options)), remote_timeout_(remote_timeout), pose_timeout_(pose_timeout),
         frame_(frame) {
+    seq_.set_mode(mode, ros::Time::now().toSec());
     crisp_pub_ = nh.advertise<mrt_msgs::CrispDataArray>("goal_crisp", 10);
     status_pub_ = nh.advertise<mrt_msgs::TaskStatus>("task_status", 50);
     replan_pub_ = nh.advertise<mrt_msgs::PlanRequest>("replan_request", 5);
@@ -91,16 +98,14 @@ class ScareNode {
   }
 
   void on_mode(const std_msgs::String& m) {
-    Mode mode;
-    if (m.data == "auto") mode = Mode::kAuto;
-    else if (m.data == "manual") mode = Mode::kManual;
-    else {
+    const std::optional<Mode> mode = parse_mode(m.data);
+    if (!mode) {
       ++dropped_;
       ROS_WARN_THROTTLE(5, "unknown mode '%s' (expected auto or manual)", m.data.c_str());
       return;
     }
-    if (mode != seq_.mode()) ROS_INFO("mode: %s", to_string(mode));
-    handle(seq_.set_mode(mode, ros::Time::now().toSec()));
+    if (*mode != seq_.mode()) ROS_INFO("mode: %s", to_string(*mode));
+    handle(seq_.set_mode(*mode, ros::Time::now().toSec()));
   }
 
   void on_remote(const geometry_msgs::Twist& t) {
@@ -243,7 +248,7 @@ class ScareNode {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "scare");
   ros::NodeHandle nh, pnh("~");
-  std::string tasks, frame;
+  std::string tasks, frame, mode;
   double rate, remote_timeout, pose_timeout;
   if (!pnh.getParam("tasks", tasks)) {
     ROS_FATAL("missing parameter ~tasks (the task YAML file)");
@@ -253,6 +258,12 @@ int main(int argc, char** argv) {
   pnh.param("remote_timeout", remote_timeout, 0.5);
   pnh.param("pose_timeout", pose_timeout, 2.0);
   pnh.param<std::string>("frame", frame, "world");
+  pnh.param<std::string>("mode", mode, "auto");
+  const std::optional<Mode> initial_mode = parse_mode(mode);
+  if (!initial_mode) {
+    ROS_FATAL("bad parameter ~mode: expected auto or manual, got '%s'", mode.c_str());
+    return 1;
+  }
   if (!(rate > 0 && rate <= 1000)) {
     ROS_FATAL("bad parameter ~rate: must be in (0, 1000], got %g", rate);
     return 1;
@@ -272,7 +283,7 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ScareNode node(nh, pnh, options, rate, remote_timeout, pose_timeout, frame);
+  ScareNode node(nh, pnh, options, *initial_mode, rate, remote_timeout, pose_timeout, frame);
   ros::spin();
   return 0;
 }
