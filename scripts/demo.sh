@@ -5,8 +5,8 @@
 # prints a summary.
 #   ./scripts/demo.sh [--gui] [NAME]    NAME: a launch file in launch/ (default: roby;
 #                                       "demo" is the figure eight on the MSL field)
-#   DURATION=<s>  simulated seconds to record (default: 140 for roby, the whole
-#                 route; 30 otherwise)
+#   DURATION=<s>  simulated seconds to record at most (default: 200 for roby,
+#                 which stops as soon as the route is completed; 30 otherwise)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 GUI=0
@@ -21,7 +21,7 @@ done
 LAUNCH="$ROOT/launch/$NAME.launch"
 [ -f "$LAUNCH" ] || { echo "demo: no launch file $LAUNCH" >&2; exit 2; }
 case "$NAME" in
-  roby) DURATION="${DURATION:-140}" ;;
+  roby) DURATION="${DURATION:-200}" ;;
   *) DURATION="${DURATION:-30}" ;;
 esac
 
@@ -56,20 +56,50 @@ echo "demo: launching $NAME (logs in $ROS_LOG_DIR)"
 roslaunch "$LAUNCH" >"$OUT/roslaunch.log" 2>&1 &
 pids+=($!)
 
-# Wait for the simulated clock to tick.
-for _ in $(seq 60); do
-  timeout 2 rostopic echo -n 1 /clock >/dev/null 2>&1 && break
+# Wait for the simulated clock to tick (rostopic fails at once while the
+# master is not up yet, so retry; each try waits long on a loaded machine).
+deadline=$((SECONDS + 120))
+until timeout 30 rostopic echo -n 1 /clock >/dev/null 2>&1; do
+  if [ "$SECONDS" -ge "$deadline" ] || ! kill -0 "${pids[-1]}" 2>/dev/null; then
+    echo "demo: the simulator did not start; see $OUT/roslaunch.log" >&2
+    tail -20 "$OUT/roslaunch.log" >&2
+    exit 1
+  fi
   sleep 1
 done
-timeout 2 rostopic echo -n 1 /clock >/dev/null 2>&1 ||
-  { echo "demo: the simulator did not start; see $OUT/roslaunch.log" >&2; tail -20 "$OUT/roslaunch.log" >&2; exit 1; }
 
-echo "demo: recording ${DURATION} s of simulated time"
+echo "demo: recording at most ${DURATION} s of simulated time"
 start=$(date +%s.%N)
-rosbag record --quiet -a -x '/rosout(_agg)?' --duration="$DURATION" -O "$OUT/demo.bag" >"$OUT/rosbag.log" 2>&1
+# /clock is left out: `rosbag play --clock` publishes its own.
+rosbag record --quiet -a -x '/clock|/rosout(_agg)?' --duration="$DURATION" -O "$OUT/demo.bag" \
+  >"$OUT/rosbag.log" 2>&1 &
+bag=$!
+waiters=("$bag")
+if [ "$NAME" = roby ]; then
+  # Roby stops recording once SCARE reports the route completed.
+  rostopic echo -n 1 --filter "m.event == 'route_completed'" /robot1/task_status >/dev/null 2>&1 &
+  waiters+=($!)
+fi
+wait -n "${waiters[@]}" || true
+if kill -0 "$bag" 2>/dev/null; then
+  sleep 2  # the last moments of the route
+  kill -INT "$bag"
+fi
+wait "$bag" || true
+for p in "${waiters[@]:1}"; do kill "$p" 2>/dev/null || true; done
 wall=$(/usr/bin/python3 -c "import time; print(time.time() - $start)")
-import -window root "$OUT/rviz.png" || echo "demo: screenshot failed" >&2
+
+kill -0 "${pids[-1]}" 2>/dev/null ||
+  { echo "demo: the launch ended early; see $OUT/roslaunch.log" >&2; tail -20 "$OUT/roslaunch.log" >&2; exit 1; }
+import -window root "$OUT/rviz.png" || true
+# A black or empty frame has a handful of colours; rviz showing a world has hundreds.
+colours=$(identify -format '%k' "$OUT/rviz.png" 2>/dev/null || echo 0)
+if [ "$colours" -lt 50 ]; then
+  echo "demo: the screenshot $OUT/rviz.png is missing or blank ($colours colours)" >&2
+  exit 1
+fi
+[ -s "$OUT/demo.bag" ] || { echo "demo: no bag was recorded; see $OUT/rosbag.log" >&2; exit 1; }
 
 /usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall"
-echo "demo: screenshot $OUT/rviz.png"
+echo "demo: screenshot $OUT/rviz.png ($colours colours)"
 echo "demo: bag        $OUT/demo.bag"

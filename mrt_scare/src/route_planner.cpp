@@ -114,11 +114,61 @@ std::vector<Point2D> RoutePlanner::replan(const Point2D& from, const Point2D& fa
     if (d < best) best = d, k = i;
   }
   if (!map_.route.empty()) unreachable_[k] = true;
-  (void)from;  // the legs after the failed point were checked by plan()
   std::vector<Point2D> out;
   for (std::size_t i = k + 1; i < map_.route.size(); ++i)
     if (!unreachable_[i]) out.push_back(map_.route[i]);
+  // The legs between route points were checked by plan(); the first leg
+  // starts wherever the robot gave up.
+  if (!out.empty()) {
+    std::vector<Point2D> via = detour(from, out.front());
+    out.insert(out.begin(), via.begin(), via.end());
+  }
   return out;
+}
+
+std::vector<Point2D> RoutePlanner::detour(const Point2D& a, const Point2D& b) const {
+  // A robot that gave up inside a building's clearance may leave it by any
+  // leg that comes no closer to that building than it already is.
+  auto free_from = [&](std::size_t u, const Point2D& p, const Point2D& q) {
+    if (u != 0) return leg_free(p, q);
+    for (const auto& bl : map_.buildings) {
+      const double d = segment_rect_distance(p, q, bl);
+      if (d < map_.clearance && !(d > 0.0 && d >= point_rect_distance(p, bl) - 1e-9)) return false;
+    }
+    return true;
+  };
+  if (free_from(0, a, b)) return {};
+  // Visibility graph: a, b and every building corner pushed out by the
+  // clearance plus 1 % in x and y, so that a leg along a side between two
+  // such corners keeps the clearance.
+  std::vector<Point2D> nodes{a, b};
+  const double m = map_.clearance * 1.01;
+  for (const auto& bl : map_.buildings)
+    for (const Point2D& c : {Point2D{bl.xmin - m, bl.ymin - m}, Point2D{bl.xmax + m, bl.ymin - m},
+                             Point2D{bl.xmax + m, bl.ymax + m}, Point2D{bl.xmin - m, bl.ymax + m}})
+      nodes.push_back(c);
+  const std::size_t n = nodes.size();
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> prev(n, n);
+  std::vector<bool> done(n, false);
+  dist[0] = 0.0;
+  for (std::size_t it = 0; it < n; ++it) {
+    std::size_t u = n;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!done[i] && dist[i] < std::numeric_limits<double>::infinity() && (u == n || dist[i] < dist[u])) u = i;
+    if (u == n || u == 1) break;
+    done[u] = true;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (done[v] || v == u || !free_from(u, nodes[u], nodes[v])) continue;
+      const double d = dist[u] + std::hypot(nodes[v].x - nodes[u].x, nodes[v].y - nodes[u].y);
+      if (d < dist[v]) dist[v] = d, prev[v] = u;
+    }
+  }
+  if (prev[1] == n) throw std::runtime_error("no collision-free way round the buildings");
+  std::vector<Point2D> via;
+  for (std::size_t v = prev[1]; v != 0; v = prev[v]) via.push_back(nodes[v]);
+  std::reverse(via.begin(), via.end());
+  return via;
 }
 
 }  // namespace mrt::scare

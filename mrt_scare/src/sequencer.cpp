@@ -50,6 +50,7 @@ std::vector<SequencerEvent> Sequencer::set_plan(const std::vector<Point2D>& poin
   std::vector<SequencerEvent> ev;
   if (task_ && task_->state() == TaskState::kActive) task_->abort();
   task_.reset();
+  if (state_ != SequencerState::kWaitingForPlan) consecutive_aborts_ = 0;
   plan_ = points;
   ++plans_;
   ev.push_back({SequencerEvent::Type::kPlanAccepted, now, points.size(), {}, pose});
@@ -67,6 +68,16 @@ std::vector<SequencerEvent> Sequencer::set_plan(const std::vector<Point2D>& poin
 std::vector<SequencerEvent> Sequencer::update(double now, const Pose2D& pose) {
   using T = SequencerEvent::Type;
   std::vector<SequencerEvent> ev;
+  if (state_ == SequencerState::kWaitingForPlan && options_.replan_timeout > 0.0 &&
+      now - replan_requested_at_ > options_.replan_timeout) {
+    // The planner did not answer: ask again, from where the robot is now.
+    replan_requested_at_ = now;
+    SequencerEvent e = last_failure_;
+    e.time = now;
+    e.pose = pose;
+    ev.push_back(e);
+    return ev;
+  }
   // Several path points can be reached in one update (they may lie close).
   while (state_ == SequencerState::kRunning && task_) {
     const TaskState s = task_->update(now, pose);
@@ -99,7 +110,9 @@ std::vector<SequencerEvent> Sequencer::update(double now, const Pose2D& pose) {
       } else {
         ++replans_;
         state_ = SequencerState::kWaitingForPlan;
-        ev.push_back({T::kReplanRequested, now, i, plan_[i], pose, el, to});
+        replan_requested_at_ = now;
+        last_failure_ = {T::kReplanRequested, now, i, plan_[i], pose, el, to};
+        ev.push_back(last_failure_);
       }
     }
     break;

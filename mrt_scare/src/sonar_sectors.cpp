@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "mrt_common/angle.h"
@@ -23,10 +24,12 @@ std::vector<double> even_mounts_deg(std::size_t count) {
 }
 
 SonarSectors::SonarSectors(std::vector<double> mount_deg, std::vector<Sector> sectors,
-                           double max_range)
+                           double max_range, double stale_after)
     : sectors_(std::move(sectors)), ranges_(mount_deg.size(), max_range),
-      members_(sectors_.size()), max_range_(max_range) {
+      times_(mount_deg.size(), -std::numeric_limits<double>::infinity()), members_(sectors_.size()),
+      max_range_(max_range), stale_after_(stale_after) {
   if (!(max_range > 0.0)) throw std::invalid_argument("max_range must be > 0");
+  if (!(stale_after >= 0.0)) throw std::invalid_argument("stale_after must be >= 0");
   for (std::size_t i = 0; i < mount_deg.size(); ++i) {
     // Beam axis in (-180, 180].
     const double a = common::rad_to_deg(common::normalize_angle(common::deg_to_rad(mount_deg[i])));
@@ -35,17 +38,31 @@ SonarSectors::SonarSectors(std::vector<double> mount_deg, std::vector<Sector> se
   }
 }
 
-bool SonarSectors::set_range(std::size_t sonar, double range_m) {
-  if (sonar >= ranges_.size() || !std::isfinite(range_m) || range_m < 0.0) return false;
-  ranges_[sonar] = std::min(range_m, max_range_);
+bool SonarSectors::set_range(std::size_t sonar, double range_m, double t) {
+  if (sonar >= ranges_.size() || std::isnan(range_m)) return false;
+  if (range_m == -std::numeric_limits<double>::infinity()) range_m = 0.0;  // too close to measure
+  if (range_m < 0.0) return false;
+  ranges_[sonar] = std::min(range_m, max_range_);  // +Inf: nothing in range
+  times_[sonar] = t;
   return true;
 }
 
-std::vector<double> SonarSectors::distances() const {
+bool SonarSectors::is_stale(std::size_t sonar, double now) const {
+  return stale_after_ > 0.0 && !(now - times_[sonar] <= stale_after_);
+}
+
+std::vector<double> SonarSectors::distances(double now) const {
   std::vector<double> d(sectors_.size(), max_range_);
   for (std::size_t s = 0; s < sectors_.size(); ++s)
-    for (std::size_t i : members_[s]) d[s] = std::min(d[s], ranges_[i]);
+    for (std::size_t i : members_[s]) d[s] = std::min(d[s], is_stale(i, now) ? 0.0 : ranges_[i]);
   return d;
+}
+
+std::vector<std::size_t> SonarSectors::stale(double now) const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < ranges_.size(); ++i)
+    if (is_stale(i, now)) out.push_back(i);
+  return out;
 }
 
 }  // namespace mrt::scare

@@ -52,7 +52,7 @@ SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std
   const YamlReader r(file);
   const YAML::Node root = r.load(yaml_text);
   if (!root.IsMap()) throw common::ParseError(file, 1, 1, "expected a map at the top level");
-  r.map(root, "top level", {"tasks", "path_task", "max_replans", "suspend_in_manual"});
+  r.map(root, "top level", {"tasks", "path_task", "max_replans", "replan_timeout", "suspend_in_manual"});
   if (!root["tasks"]) r.fail(root, "missing key 'tasks'");
   r.map(root["tasks"], "tasks", {"ReachPathPoint"});
   std::map<std::string, TaskSpec> tasks;
@@ -73,6 +73,7 @@ SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std
       r.fail(root["max_replans"], "expected an integer 0..1000 for 'max_replans'");
     o.max_replans = static_cast<int>(m);
   }
+  if (root["replan_timeout"]) o.replan_timeout = r.non_negative(root["replan_timeout"], "replan_timeout");
   if (root["suspend_in_manual"])
     o.suspend_in_manual = r.boolean(root["suspend_in_manual"], "suspend_in_manual");
   return o;

@@ -38,6 +38,7 @@ TEST(TaskConfig, ParsesReachPathPoint) {
       "        per_metre: 2.5\n"
       "    on_failure: abort_and_replan\n"
       "max_replans: 3\n"
+      "replan_timeout: 4.5\n"
       "suspend_in_manual: false\n",
       "t.yaml");
   EXPECT_EQ(o.path_task.name, "ReachPathPoint");
@@ -45,6 +46,7 @@ TEST(TaskConfig, ParsesReachPathPoint) {
   EXPECT_EQ(o.path_task.success[0]->describe(), "within 0.6 m");
   EXPECT_DOUBLE_EQ(o.path_task.timeout_limit(4.0), 30.0);
   EXPECT_EQ(o.max_replans, 3);
+  EXPECT_DOUBLE_EQ(o.replan_timeout, 4.5);
   EXPECT_FALSE(o.suspend_in_manual);
   EXPECT_EQ(o.path_task.on_failure, OnFailure::kAbortAndReplan);
 }
@@ -95,6 +97,34 @@ TEST(RoadMap, ParsesAndPlans) {
   }
 }
 
+TEST(RoadMap, ReplanGoesRoundABuildingFromTheCurrentPose) {
+  // Building A = [2, 4] x [-1, 1], clearance 0.5: corners pushed out by
+  // 0.505 are (1.495, -1.505), (4.505, -1.505), (4.505, 1.505), (1.495, 1.505).
+  // Route (0, 3) -> (6, 3) -> (6, -3). The robot gives up on (6, 3) standing at
+  // (0, 0): the straight leg to (6, -3) grazes A's corner (2, -1). Round the
+  // lower-left corner: (0, 0) -> (1.495, -1.505) -> (6, -3), whose second leg
+  // passes (2, -1) at |0.505 * -1.495 - 0.505 * 4.505| / |(4.505, -1.495)|
+  // = 3.03 / 4.747 = 0.638 m > 0.5 (the lower-right corner is not needed).
+  RoutePlanner p(parse_road_map("clearance: 0.5\nbuildings: [{name: A, box: [2, -1, 4, 1]}]\n"
+                                "route: [[0, 3], [6, 3], [6, -3]]\n", "m"));
+  p.plan({-1, 3});
+  const auto r = p.replan({0, 0}, {6, 3});
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0].x, 1.495, 1e-12);
+  EXPECT_NEAR(r[0].y, -1.505, 1e-12);
+  EXPECT_DOUBLE_EQ(r[1].x, 6.0);
+  EXPECT_DOUBLE_EQ(r[1].y, -3.0);
+  // From (1.8, 0), inside A's clearance (0.2 m from it), the robot may back
+  // out, but not come closer: the same corner.
+  const auto q = p.detour({1.8, 0.0}, {6, -3});
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_NEAR(q[0].x, 1.495, 1e-12);
+  EXPECT_NEAR(q[0].y, -1.505, 1e-12);
+  // A clear leg needs no detour; a goal within the clearance has no way.
+  EXPECT_TRUE(p.detour({0, 3}, {6, 3}).empty());
+  EXPECT_THROW(p.detour({0, 0}, {4.3, 0}), std::runtime_error);
+}
+
 TEST(RoadMap, SegmentRectangleDistance) {
   Building b{"b", 0, 0, 2, 2};
   EXPECT_DOUBLE_EQ(segment_rect_distance({-1, 3}, {3, 3}, b), 1.0);   // parallel above
@@ -118,6 +148,35 @@ TEST(SonarSectors, MinimumPerSector) {
   EXPECT_DOUBLE_EQ(d[0], 1.2);
   EXPECT_DOUBLE_EQ(d[1], 0.7);
   EXPECT_DOUBLE_EQ(d[2], 5.0);
+}
+
+TEST(SonarSectors, InfinitiesAsRep117AndStaleSonarsBlock) {
+  // 8 sonars every 45 deg: sonar 0 alone is front, sonar 1 front-left,
+  // sonar 2 left, sonar 7 front-right, sonar 6 right. Readings go stale
+  // after 0.5 s.
+  SonarSectors s(even_mounts_deg(8), default_sectors(), 5.0, 0.5);
+  for (std::size_t i = 0; i < 8; ++i) ASSERT_TRUE(s.set_range(i, 3.0, 10.0));
+  EXPECT_TRUE(s.set_range(0, INFINITY, 10.0));    // nothing in range
+  EXPECT_TRUE(s.set_range(1, -INFINITY, 10.0));   // too close to measure
+  EXPECT_FALSE(s.set_range(2, NAN, 10.2));        // refused: 3.0 kept, from t = 10
+  EXPECT_FALSE(s.set_range(7, -0.5, 10.2));
+  auto d = s.distances(10.3);
+  EXPECT_DOUBLE_EQ(d[0], 5.0);
+  EXPECT_DOUBLE_EQ(d[1], 0.0);
+  EXPECT_DOUBLE_EQ(d[3], 3.0);
+  EXPECT_TRUE(s.stale(10.5).empty());
+  // At t = 10.6 only sonar 2 (left) and 7 (front-right) were not refreshed.
+  for (std::size_t i : {0, 1, 3, 4, 5, 6}) ASSERT_TRUE(s.set_range(i, 4.0, 10.4));
+  EXPECT_EQ(s.stale(10.6), (std::vector<std::size_t>{2, 7}));
+  d = s.distances(10.6);
+  EXPECT_DOUBLE_EQ(d[0], 4.0);  // front
+  EXPECT_DOUBLE_EQ(d[2], 0.0);  // front-right: sonar 7 is silent
+  EXPECT_DOUBLE_EQ(d[3], 0.0);  // left: sonar 2 is silent
+  EXPECT_DOUBLE_EQ(d[4], 4.0);  // right
+  // A sonar never heard from is stale from the start.
+  SonarSectors fresh(even_mounts_deg(8), default_sectors(), 5.0, 0.5);
+  EXPECT_EQ(fresh.stale(0.0).size(), 8u);
+  EXPECT_THROW(SonarSectors(even_mounts_deg(8), default_sectors(), 5.0, -1.0), std::invalid_argument);
 }
 
 TEST(CrispBuilder, RuleBaseUnits) {

@@ -113,8 +113,18 @@ TEST(Sequencer, TimeoutAbortsAndRequestsReplanFromCurrentPose) {
   EXPECT_EQ(s.active(), nullptr);
   EXPECT_EQ(s.failed(), 1u);
   EXPECT_EQ(s.replans(), 1u);
-  // Nothing happens until the new plan arrives.
-  EXPECT_TRUE(s.update(50.0, Pose2D(6, 1.5, 0)).empty());
+  // Nothing happens while the planner has replan_timeout (10 s) to answer;
+  // then the request goes again, from the pose at that time.
+  EXPECT_TRUE(s.update(22.0, Pose2D(6, 1.5, 0)).empty());
+  ev = s.update(22.2, Pose2D(6.5, 1.0, 0));
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].type, T::kReplanRequested);
+  EXPECT_DOUBLE_EQ(ev[0].pose.x, 6.5);
+  EXPECT_DOUBLE_EQ(ev[0].pose.y, 1.0);
+  EXPECT_EQ(ev[0].index, 1u);
+  EXPECT_DOUBLE_EQ(ev[0].point.x, 20.0);
+  EXPECT_EQ(s.replans(), 1u);  // one aborted plan, asked twice
+  EXPECT_TRUE(s.update(32.0, Pose2D(6.5, 1.0, 0)).empty());
   ev = s.set_plan({{30, 0}}, 51.0, Pose2D(6, 1.5, 0));
   EXPECT_EQ(s.state(), SequencerState::kRunning);
   EXPECT_EQ(s.active()->index(), 0u);
@@ -137,6 +147,12 @@ TEST(Sequencer, GivesUpAfterMaxReplans) {
   EXPECT_TRUE(has(ev, T::kGaveUp));
   EXPECT_FALSE(has(ev, T::kReplanRequested));
   EXPECT_EQ(s.state(), SequencerState::kGaveUp);
+  // A plan from outside (not an answer to a re-plan request) starts afresh:
+  // its first failure asks for a re-plan again.
+  s.set_plan({{10, 0}}, t + 2.0, Pose2D(0, 0, 0));
+  ev = s.update(t + 3.5, Pose2D(0, 0, 0));
+  EXPECT_TRUE(has(ev, T::kReplanRequested));
+  EXPECT_FALSE(has(ev, T::kGaveUp));
 }
 
 TEST(Sequencer, SkipPolicyGoesToNextPoint) {

@@ -61,6 +61,7 @@ Simulator::Simulator(World world, double dt) : world_(std::move(world)), dt_(dt)
     r.wheel_setpoint.assign(n, 0.0);
     r.wheel_speed.assign(n, 0.0);
     r.wheel_angle.assign(n, 0.0);
+    r.encoder_angle.assign(n, 0.0);
     r.ticks.assign(n, 0);
     r.sonar.assign(c.sensors.sonars.size(), c.sensors.sonars.empty() ? 0.0 : c.sensors.sonars[0].max_range);
     std::vector<MouseModel> mice;
@@ -157,10 +158,13 @@ void Simulator::step() {
       r.pose = next;
       r.twist = t;
     }
+    const double enc_noise = r.config.sensors.encoder_noise;
     for (std::size_t k = 0; k < r.wheel_angle.size(); ++k) {
-      r.wheel_angle[k] += r.wheel_speed[k] * dt_;
+      const double d = r.wheel_speed[k] * dt_;
+      r.wheel_angle[k] += d;
+      r.encoder_angle[k] += enc_noise > 0.0 ? d * (1.0 + enc_noise * std::normal_distribution<double>()(rng_)) : d;
       r.ticks[k] = static_cast<std::int64_t>(
-          std::floor(r.wheel_angle[k] * r.config.sensors.ticks_per_rev / (2.0 * kPi)));
+          std::floor(r.encoder_angle[k] * r.config.sensors.ticks_per_rev / (2.0 * kPi)));
     }
     for (std::size_t k = 0; k < mice_[i].size(); ++k)
       if (mice_[i][k].step(r.twist, dt_, rng_)) mice_fault_[i][k] = true;

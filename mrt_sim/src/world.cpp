@@ -258,8 +258,9 @@ class Loader : private mrt::common::YamlReader {
       }
     }
     if (const Node e = n["encoders"]) {
-      map(e, "encoders", {"rate", "ticks_per_rev"});
+      map(e, "encoders", {"rate", "ticks_per_rev", "noise"});
       s.rate_encoders = non_negative(e, "rate", 50.0);
+      s.encoder_noise = non_negative(e, "noise", s.encoder_noise);
       if (e["ticks_per_rev"]) s.ticks_per_rev = static_cast<int>(integer(e["ticks_per_rev"], "ticks_per_rev", 1, 1000000000));
     }
     if (const Node so = n["sonar"]) sonar(so, base, s);

@@ -1,10 +1,16 @@
 // rostest of sim_node: records the mice and vision topics of a robot driven
-// straight into a bag (rosbag::Bag, written from this test's
-// subscriptions), reads the bag back with rosbag::View and checks message
-// counts (rate x duration, +-1) and contents: the summed mouse counts equal
-// the ground-truth displacement seen in each mouse's frame (mounts from the
-// static tf), and the percepts name their producer and hold the expected
-// classes with distances that match the ground truth.
+// straight with the real `rosbag record`, replays the bag with `rosbag play`
+// (remapped to /replay/...) and checks that the replay delivers exactly the
+// messages seen live, then checks counts (rate x duration, +-1) and contents:
+// the summed mouse counts equal the ground-truth displacement seen in each
+// mouse's frame (mounts from the static tf), and the percepts name their
+// producer and hold the expected classes with distances that match the
+// ground truth.
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -12,8 +18,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
@@ -25,6 +29,8 @@
 #include <rosbag/view.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+
+extern char** environ;
 
 namespace {
 
@@ -44,6 +50,62 @@ std::vector<std::string> split(const std::string& s) {
   std::string w;
   while (in >> w) out.push_back(w);
   return out;
+}
+
+// Starts a program found on PATH; returns its pid (0 on failure).
+pid_t spawn(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  return posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) == 0 ? pid : 0;
+}
+
+// Waits up to `seconds` of wall time for a child, spinning meanwhile;
+// returns its exit status, or -1 if it is still running.
+int wait_child(pid_t pid, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  int status = 0;
+  while (ros::WallTime::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  return -1;
+}
+
+// How many nodes other than this one subscribe to `topic` (from the master).
+int other_subscribers(const std::string& topic) {
+  XmlRpc::XmlRpcValue req, res, payload;
+  req[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", req, res, payload, false)) return 0;
+  XmlRpc::XmlRpcValue& subs = payload[1];
+  for (int i = 0; i < subs.size(); ++i) {
+    if (static_cast<std::string>(subs[i][0]) != topic) continue;
+    int n = 0;
+    for (int j = 0; j < subs[i][1].size(); ++j)
+      if (static_cast<std::string>(subs[i][1][j]) != ros::this_node::getName()) ++n;
+    return n;
+  }
+  return 0;
+}
+
+bool same(const mrt_msgs::MiceReading& a, const mrt_msgs::MiceReading& b) {
+  return a.header.stamp == b.header.stamp && a.left.dx == b.left.dx && a.left.dy == b.left.dy &&
+         a.right.dx == b.right.dx && a.right.dy == b.right.dy && a.left.mouse_id == b.left.mouse_id &&
+         a.right.mouse_id == b.right.mouse_id;
+}
+
+bool same(const mrt_msgs::Percept& a, const mrt_msgs::Percept& b) {
+  if (a.header.stamp != b.header.stamp || a.objects.size() != b.objects.size()) return false;
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const auto &x = a.objects[i], &y = b.objects[i];
+    if (x.name != y.name || x.attributes.size() != y.attributes.size()) return false;
+    for (std::size_t j = 0; j < x.attributes.size(); ++j)
+      if (x.attributes[j].value != y.attributes[j].value || x.attributes[j].symbol != y.attributes[j].symbol)
+        return false;
+  }
+  return true;
 }
 
 class BagTest : public ::testing::Test {
@@ -77,27 +139,23 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   tf2_ros::Buffer tf_buffer;
   tf2_ros::TransformListener tf_listener(tf_buffer);
 
-  rosbag::Bag bag(bag_path_, rosbag::bagmode::Write);
-  bool recording = false;
-  std::map<std::string, int> written;
+  // Everything seen live, by stamp, and everything the replay delivers.
+  std::map<std::int64_t, mrt_msgs::MiceReading> live_mice;
+  std::map<std::int64_t, mrt_msgs::Percept> live_percepts;
+  std::vector<mrt_msgs::MiceReading> replay_mice;
+  std::vector<mrt_msgs::Percept> replay_percepts;
   std::vector<nav_msgs::Odometry> gt;  // every step, kept in memory for the checks
-  // Messages are written at their sim-time stamp, so the bag's time line is
-  // the simulation's.
-  auto cb_mice = [&](const mrt_msgs::MiceReading::ConstPtr& m) {
-    if (!recording) return;
-    bag.write(ns_ + "mice", m->header.stamp, *m);
-    ++written["mice"];
-  };
-  auto cb_percepts = [&](const mrt_msgs::Percept::ConstPtr& m) {
-    if (!recording) return;
-    bag.write(ns_ + "percepts", m->header.stamp, *m);
-    ++written["percepts"];
-  };
   auto cb_gt = [&](const nav_msgs::Odometry::ConstPtr& m) { gt.push_back(*m); };
-  ros::Subscriber s1 = nh.subscribe<mrt_msgs::MiceReading>(ns_ + "mice", 1000, cb_mice);
-  ros::Subscriber s2 = nh.subscribe<mrt_msgs::Percept>(ns_ + "percepts", 1000, cb_percepts);
+  ros::Subscriber s1 = nh.subscribe<mrt_msgs::MiceReading>(
+      ns_ + "mice", 1000, [&](const mrt_msgs::MiceReading::ConstPtr& m) { live_mice[m->header.stamp.toNSec()] = *m; });
+  ros::Subscriber s2 = nh.subscribe<mrt_msgs::Percept>(
+      ns_ + "percepts", 1000, [&](const mrt_msgs::Percept::ConstPtr& m) { live_percepts[m->header.stamp.toNSec()] = *m; });
   ros::Subscriber s3 = nh.subscribe<nav_msgs::Odometry>(ns_ + "ground_truth", 20000, cb_gt,
                                                         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+  ros::Subscriber r1 = nh.subscribe<mrt_msgs::MiceReading>(
+      "/replay/mice", 1000, [&](const mrt_msgs::MiceReading::ConstPtr& m) { replay_mice.push_back(*m); });
+  ros::Subscriber r2 = nh.subscribe<mrt_msgs::Percept>(
+      "/replay/percepts", 1000, [&](const mrt_msgs::Percept::ConstPtr& m) { replay_percepts.push_back(*m); });
   ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>(ns_ + "cmd_vel", 10);
 
   // Wait for the simulator.
@@ -111,10 +169,21 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   ASSERT_FALSE(gt.empty()) << "no ground truth from sim_node";
   ASSERT_GT(cmd_pub.getNumSubscribers(), 0u);
 
-  // Drive straight and record; stop after the recording window plus a margin.
+  // Record with rosbag, from when it has subscribed to both topics.
+  const pid_t rec = spawn({"rosbag", "record", "--quiet", "-O", bag_path_, ns_ + "mice", ns_ + "percepts"});
+  ASSERT_GT(rec, 0) << "cannot start rosbag record";
+  give_up = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (ros::ok() && ros::WallTime::now() < give_up &&
+         (other_subscribers(ns_ + "mice") == 0 || other_subscribers(ns_ + "percepts") == 0)) {
+    ros::spinOnce();
+    ros::WallDuration(0.05).sleep();
+  }
+  ASSERT_GT(other_subscribers(ns_ + "percepts"), 0) << "rosbag record did not subscribe";
+  ros::WallDuration(0.5).sleep();  // let its connections come up
+
+  // Drive straight; stop after the recording window plus a margin.
   geometry_msgs::Twist cmd;
   cmd.linear.x = speed_;
-  recording = true;
   const double t_begin = gt.back().header.stamp.toSec();
   give_up = ros::WallTime::now() + ros::WallDuration(60.0);
   ros::WallTime next_cmd = ros::WallTime::now();
@@ -127,11 +196,9 @@ TEST_F(BagTest, RecordReplayAndCheck) {
     ros::spinOnce();
     ros::WallDuration(0.001).sleep();
   }
-  recording = false;
   cmd_pub.publish(geometry_msgs::Twist());
-  bag.close();
-  ASSERT_GT(written["mice"], 0) << "no mice messages";
-  ASSERT_GT(written["percepts"], 0) << "no percepts";
+  kill(rec, SIGINT);
+  ASSERT_GE(wait_child(rec, 30.0), 0) << "rosbag record did not stop";
 
   // Ground truth by stamp (every step is published).
   std::map<std::int64_t, nav_msgs::Odometry> gt_at;
@@ -150,23 +217,43 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   }
   ASSERT_TRUE(moving_seen) << "the robot never moved";
 
-  // Replay.
+  // The bag holds what was published live, unchanged.
   rosbag::Bag in(bag_path_, rosbag::bagmode::Read);
   std::vector<mrt_msgs::MiceReading> mice;
   std::vector<mrt_msgs::Percept> percepts;
   rosbag::View view(in, rosbag::TopicQuery({ns_ + "mice", ns_ + "percepts"}));
   for (const rosbag::MessageInstance& mi : view) {
     if (auto m = mi.instantiate<mrt_msgs::MiceReading>()) {
-      EXPECT_EQ(mi.getTime(), m->header.stamp);
+      ASSERT_TRUE(live_mice.count(m->header.stamp.toNSec())) << "recorded a mice message never published";
+      EXPECT_TRUE(same(*m, live_mice[m->header.stamp.toNSec()]));
       mice.push_back(*m);
     } else if (auto p = mi.instantiate<mrt_msgs::Percept>()) {
+      ASSERT_TRUE(live_percepts.count(p->header.stamp.toNSec())) << "recorded a percept never published";
+      EXPECT_TRUE(same(*p, live_percepts[p->header.stamp.toNSec()]));
       percepts.push_back(*p);
     } else {
       ADD_FAILURE() << "unexpected type " << mi.getDataType() << " on " << mi.getTopic();
     }
   }
-  EXPECT_EQ(static_cast<int>(mice.size()), written["mice"]);
-  EXPECT_EQ(static_cast<int>(percepts.size()), written["percepts"]);
+  ASSERT_GT(mice.size(), 0u) << "no mice messages recorded";
+  ASSERT_GT(percepts.size(), 0u) << "no percepts recorded";
+
+  // Replay it (4x, remapped) and receive exactly the recorded messages, in order.
+  const pid_t play = spawn({"rosbag", "play", "--quiet", "--wait-for-subscribers", "-r", "4", bag_path_,
+                            ns_ + "mice:=/replay/mice", ns_ + "percepts:=/replay/percepts"});
+  ASSERT_GT(play, 0) << "cannot start rosbag play";
+  ASSERT_EQ(wait_child(play, 60.0), 0) << "rosbag play failed or did not finish";
+  const ros::WallTime settle = ros::WallTime::now() + ros::WallDuration(2.0);
+  while (ros::WallTime::now() < settle &&
+         (replay_mice.size() < mice.size() || replay_percepts.size() < percepts.size())) {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  ASSERT_EQ(replay_mice.size(), mice.size());
+  ASSERT_EQ(replay_percepts.size(), percepts.size());
+  for (std::size_t i = 0; i < mice.size(); ++i) EXPECT_TRUE(same(replay_mice[i], mice[i])) << "mice #" << i;
+  for (std::size_t i = 0; i < percepts.size(); ++i)
+    EXPECT_TRUE(same(replay_percepts[i], percepts[i])) << "percept #" << i;
 
   // Window: from the first mouse sample after motion started, for `duration`.
   std::size_t first = 0;
@@ -177,9 +264,13 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   const ros::Time ta = mice[first].header.stamp;
   const ros::Time tb = ta + ros::Duration(duration_);
 
-  // Counts: rate x duration within one.
-  rosbag::View mice_window(in, rosbag::TopicQuery(ns_ + "mice"), ta + ros::Duration(1e-6), tb);
-  rosbag::View vision_window(in, rosbag::TopicQuery(ns_ + "percepts"), ta + ros::Duration(1e-6), tb);
+  // Counts: rate x duration within one (by header stamp, in (ta, tb]).
+  std::vector<mrt_msgs::MiceReading> mice_window;
+  std::vector<mrt_msgs::Percept> vision_window;
+  for (const auto& m : mice)
+    if (m.header.stamp > ta && m.header.stamp <= tb) mice_window.push_back(m);
+  for (const auto& p : percepts)
+    if (p.header.stamp > ta && p.header.stamp <= tb) vision_window.push_back(p);
   EXPECT_NEAR(static_cast<double>(mice_window.size()), rate_mice_ * duration_, 1.0);
   EXPECT_NEAR(static_cast<double>(vision_window.size()), rate_vision_ * duration_, 1.0);
 
@@ -187,19 +278,17 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   std::map<std::string, std::pair<long, long>> sum;
   ros::Time tlast = ta;
   std::string left_frame, right_frame, left_id, right_id;
-  for (const rosbag::MessageInstance& mi : mice_window) {
-    auto m = mi.instantiate<mrt_msgs::MiceReading>();
-    ASSERT_TRUE(m);
-    EXPECT_EQ(m->header.frame_id, robot_ + "/base_link_truth");
-    sum[m->left.mouse_id].first += m->left.dx;
-    sum[m->left.mouse_id].second += m->left.dy;
-    sum[m->right.mouse_id].first += m->right.dx;
-    sum[m->right.mouse_id].second += m->right.dy;
-    left_frame = m->left.header.frame_id;
-    right_frame = m->right.header.frame_id;
-    left_id = m->left.mouse_id;
-    right_id = m->right.mouse_id;
-    tlast = m->header.stamp;
+  for (const auto& m : mice_window) {
+    EXPECT_EQ(m.header.frame_id, robot_ + "/base_link_truth");
+    sum[m.left.mouse_id].first += m.left.dx;
+    sum[m.left.mouse_id].second += m.left.dy;
+    sum[m.right.mouse_id].first += m.right.dx;
+    sum[m.right.mouse_id].second += m.right.dy;
+    left_frame = m.left.header.frame_id;
+    right_frame = m.right.header.frame_id;
+    left_id = m.left.mouse_id;
+    right_id = m.right.mouse_id;
+    tlast = m.header.stamp;
   }
   ASSERT_TRUE(gt_at.count(ta.toNSec()) && gt_at.count(tlast.toNSec()));
   const auto& pa = gt_at[ta.toNSec()].pose.pose.position;
@@ -227,9 +316,8 @@ TEST_F(BagTest, RecordReplayAndCheck) {
 
   // Percept contents.
   std::set<std::string> classes;
-  for (const rosbag::MessageInstance& mi : vision_window) {
-    auto p = mi.instantiate<mrt_msgs::Percept>();
-    ASSERT_TRUE(p);
+  for (const auto& percept : vision_window) {
+    const mrt_msgs::Percept* p = &percept;
     EXPECT_EQ(p->sensor, "omnivision");
     EXPECT_EQ(p->robot, robot_);
     EXPECT_EQ(p->header.frame_id, robot_ + "/base_link_truth");
@@ -260,8 +348,9 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   for (const auto& c : expected_classes_) EXPECT_TRUE(classes.count(c)) << "no object of class " << c;
   in.close();
   if (!HasFailure()) std::remove(bag_path_.c_str());
-  std::printf("bag: %zu mice and %zu percept messages in %.1f s\n", static_cast<std::size_t>(mice_window.size()),
-              static_cast<std::size_t>(vision_window.size()), duration_);
+  std::printf("bag: %zu mice and %zu percepts recorded and replayed; %zu and %zu in %.1f s\n", mice.size(),
+              percepts.size(), mice_window.size(),
+              vision_window.size(), duration_);
 }
 
 }  // namespace

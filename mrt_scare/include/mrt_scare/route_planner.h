@@ -33,7 +33,9 @@ double segment_rect_distance(const Point2D& a, const Point2D& b, const Building&
 
 /// Plans over a RoadMap. The stand-in's re-planning: the failed path point is
 /// marked unreachable and the new plan goes from the current pose through
-/// the remaining reachable path points after it.
+/// the remaining reachable path points after it; when the leg from the
+/// current pose to the first of them passes a building, it goes round by the
+/// shortest path over the buildings' corners (pushed out by the clearance).
 class RoutePlanner {
  public:
   explicit RoutePlanner(RoadMap map);
@@ -41,8 +43,13 @@ class RoutePlanner {
   /// ...) passes closer than `clearance` to a building.
   std::vector<Point2D> plan(const Point2D& start);
   /// A new plan from `from` after path point `failed` (nearest route point)
-  /// could not be reached. Legs crossing a building are skipped.
+  /// could not be reached: detour points (if any) then the remaining route.
   std::vector<Point2D> replan(const Point2D& from, const Point2D& failed);
+  /// The shortest collision-free polyline from `a` to `b` over the
+  /// buildings' corners pushed out by the clearance: the intermediate points
+  /// only (empty when the straight leg is free). Throws std::runtime_error
+  /// when there is none.
+  std::vector<Point2D> detour(const Point2D& a, const Point2D& b) const;
   const RoadMap& map() const { return map_; }
   const std::vector<bool>& unreachable() const { return unreachable_; }
 

@@ -18,7 +18,11 @@ const char* to_string(Mode m);
 struct SequencerOptions {
   TaskSpec path_task = TaskSpec::reach_path_point(0.5, 30.0, 0.0);
   /// Consecutive aborted plans after which the sequencer gives up (0 = never).
+  /// A plan that does not answer a re-plan request starts the count afresh.
   int max_replans = 5;
+  /// s waiting for the planner's answer after which the re-plan request is
+  /// sent again, from the pose at that time (0 = never).
+  double replan_timeout = 10.0;
   /// In Manual mode the active task is suspended (its timeout clock stops).
   bool suspend_in_manual = true;
 };
@@ -33,7 +37,8 @@ struct SequencerEvent {
     kTaskSucceeded,    // index, point
     kTaskFailed,       // index, point (the timeout expired)
     kPlanAborted,      // the whole plan was aborted
-    kReplanRequested,  // pose: re-plan from here; index/point: the failed one
+    kReplanRequested,  // pose: re-plan from here; index/point: the failed one (also re-sent
+                       // every replan_timeout while no plan comes)
     kRouteCompleted,   // every path point reached
     kGaveUp,           // max_replans consecutive failures
     kModeChanged,
@@ -82,6 +87,8 @@ class Sequencer {
   std::optional<Task> task_;
   std::size_t reached_ = 0, failed_ = 0, replans_ = 0, plans_ = 0;
   int consecutive_aborts_ = 0;
+  double replan_requested_at_ = 0.0;
+  SequencerEvent last_failure_{};  // the task whose failure asked for a re-plan
 };
 
 /// The goal as crisp data for the rule base: distance in cm and bearing in

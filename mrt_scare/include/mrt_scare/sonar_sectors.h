@@ -23,14 +23,21 @@ std::vector<Sector> default_sectors();
 class SonarSectors {
  public:
   /// `mount_deg[i]`: beam axis of sonar i. `max_range`: value of an empty
-  /// sector (m).
-  SonarSectors(std::vector<double> mount_deg, std::vector<Sector> sectors, double max_range);
+  /// sector (m). `stale_after` (s, 0 = never): a sonar whose last reading is
+  /// older than this reads 0 m, so a silent sonar blocks its sector rather
+  /// than leave its last (possibly clear) reading in force.
+  SonarSectors(std::vector<double> mount_deg, std::vector<Sector> sectors, double max_range,
+               double stale_after = 0.0);
 
-  /// Stores sonar i's reading (m); a non-finite or negative one is refused
-  /// (returns false) and the old reading kept.
-  bool set_range(std::size_t sonar, double range_m);
-  /// Minimum range per sector (m), in the order of `sectors()`.
-  std::vector<double> distances() const;
+  /// Stores sonar i's reading (m) taken at time `t` (s). As REP-117 says,
+  /// +Inf is "nothing within range" (max_range) and -Inf "too close to
+  /// measure" (0); NaN or a negative range is refused (returns false) and
+  /// the old reading kept.
+  bool set_range(std::size_t sonar, double range_m, double t = 0.0);
+  /// Minimum range per sector (m) at time `now`, in the order of `sectors()`.
+  std::vector<double> distances(double now = 0.0) const;
+  /// Sonars whose reading is stale at `now` (never read counts as stale).
+  std::vector<std::size_t> stale(double now) const;
   const std::vector<Sector>& sectors() const { return sectors_; }
   std::size_t sonar_count() const { return ranges_.size(); }
   /// Sectors each sonar feeds (for tests).
@@ -39,8 +46,10 @@ class SonarSectors {
  private:
   std::vector<Sector> sectors_;
   std::vector<double> ranges_;
+  std::vector<double> times_;                      // s, of each sonar's reading (-inf: never)
   std::vector<std::vector<std::size_t>> members_;  // per sector, sonar indices
-  double max_range_;
+  double max_range_, stale_after_;
+  bool is_stale(std::size_t sonar, double now) const;
 };
 
 /// Evenly spaced sonar mounts, the first facing forward (mrt_sim's `count`).

@@ -36,7 +36,12 @@ class PlannerNode {
     }
     ROS_INFO("re-plan from (%.2f, %.2f): path point (%.2f, %.2f) unreachable (%s)", r.x, r.y, r.failed_x,
              r.failed_y, r.reason.c_str());
-    const auto plan = planner_.replan({r.x, r.y}, {r.failed_x, r.failed_y});
+    std::vector<Point2D> plan;
+    try {
+      plan = planner_.replan({r.x, r.y}, {r.failed_x, r.failed_y});
+    } catch (const std::runtime_error& e) {
+      ROS_ERROR("no plan from (%.2f, %.2f): %s; sending an empty plan (stop)", r.x, r.y, e.what());
+    }
     publish(plan, {r.x, r.y});
     publish_markers();
   }

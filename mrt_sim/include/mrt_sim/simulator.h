@@ -27,7 +27,8 @@ struct RobotState {
   std::vector<double> wheel_setpoint;  // rad/s, as commanded
   std::vector<double> wheel_speed;     // rad/s, after saturation
   std::vector<double> wheel_angle;     // rad, integrated
-  std::vector<std::int64_t> ticks;     // encoder ticks (floor of angle * ticks_per_rev / 2pi)
+  std::vector<double> encoder_angle;   // rad, the wheel angle as the encoder measures it (noisy)
+  std::vector<std::int64_t> ticks;     // encoder ticks (floor of encoder_angle * ticks_per_rev / 2pi)
   bool saturated = false;
   bool bumped = false;              // the last step was blocked by a collision
 

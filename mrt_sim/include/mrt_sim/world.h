@@ -93,6 +93,7 @@ struct SensorsConfig {
   std::vector<MouseConfig> mice;
   double rate_encoders = 50.0;  // Hz, 0 = off
   int ticks_per_rev = 2000;     // encoder ticks per wheel revolution
+  double encoder_noise = 0.0;   // relative std-dev of each step's wheel-angle increment
   double rate_sonar = 10.0;     // Hz, 0 = off
   std::vector<SonarConfig> sonars;
   double sonar_noise = 0.01;    // m, std-dev
