@@ -70,8 +70,9 @@ done
 
 echo "demo: recording at most ${DURATION} s of simulated time"
 start=$(date +%s.%N)
-# /clock is left out: `rosbag play --clock` publishes its own.
-rosbag record --quiet -a -x '/clock|/rosout(_agg)?' --duration="$DURATION" -O "$OUT/demo.bag" \
+# Left out: /clock (`rosbag play --clock` publishes its own) and the growing
+# ground-truth trails (nav_msgs/Path, derivable from ground_truth).
+rosbag record --quiet -a -x '/clock|/rosout(_agg)?|.*/ground_truth_path' --duration="$DURATION" -O "$OUT/demo.bag" \
   >"$OUT/rosbag.log" 2>&1 &
 bag=$!
 waiters=("$bag")
