@@ -14,7 +14,8 @@ std::vector<Sector> default_sectors() {
           {"ObstacleFrontLeft", 25.0, 70.0},
           {"ObstacleFrontRight", -70.0, -25.0},
           {"ObstacleLeft", 70.0, 115.0},
-          {"ObstacleRight", -115.0, -70.0}};
+          {"ObstacleRight", -115.0, -70.0},
+          {"ObstacleBack", 145.0, -145.0}};
 }
 
 std::vector<double> even_mounts_deg(std::size_t count) {
@@ -33,8 +34,11 @@ SonarSectors::SonarSectors(std::vector<double> mount_deg, std::vector<Sector> se
   for (std::size_t i = 0; i < mount_deg.size(); ++i) {
     // Beam axis in (-180, 180].
     const double a = common::rad_to_deg(common::normalize_angle(common::deg_to_rad(mount_deg[i])));
-    for (std::size_t s = 0; s < sectors_.size(); ++s)
-      if (a >= sectors_[s].from_deg - 1e-9 && a <= sectors_[s].to_deg + 1e-9) members_[s].push_back(i);
+    for (std::size_t s = 0; s < sectors_.size(); ++s) {
+      const bool after_from = a >= sectors_[s].from_deg - 1e-9, before_to = a <= sectors_[s].to_deg + 1e-9;
+      const bool wraps = sectors_[s].from_deg > sectors_[s].to_deg;
+      if (wraps ? (after_from || before_to) : (after_from && before_to)) members_[s].push_back(i);
+    }
   }
 }
 

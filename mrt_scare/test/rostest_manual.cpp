@@ -40,11 +40,22 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   EXPECT_LT(std::hypot(obs.x_, obs.y_), 0.02) << "drove off without a remote command";
   EXPECT_EQ(obs.last_.reached, 0u);
 
+  // Backing up is allowed, but not into the wall 1.6 m behind: the robot
+  // stops (after 12 s at 0.2 m/s it would be 0.8 m past the wall).
+  drive(obs, remote, -0.2, 0.0, 12.0);
+  const double x_back = obs.x_;
+  EXPECT_LT(x_back, -0.3) << "did not back up";
+  drive(obs, remote, -0.2, 0.0, 2.0);
+  EXPECT_NEAR(obs.x_, x_back, 0.05) << "still backing into the wall";
+  EXPECT_GE(obs.min_clearance_, 0.3) << "nearest: " << obs.nearest_;
+  const double back_clearance = obs.min_clearance_;
+
   // Follows the remote: forward and left, then forward and right.
+  const double x_start = obs.x_;
   drive(obs, remote, 0.3, 0.3, 2.0);
   const double th_left = obs.theta_, x_left = obs.x_;
   EXPECT_GT(th_left, 0.3) << "did not turn left";
-  EXPECT_GT(x_left, 0.2) << "did not move forward";
+  EXPECT_GT(x_left, x_start + 0.2) << "did not move forward";
   drive(obs, remote, 0.3, -0.3, 2.0);
   EXPECT_LT(obs.theta_, th_left - 0.3) << "did not turn right";
   EXPECT_GT(obs.x_, x_left + 0.2);
@@ -69,8 +80,10 @@ TEST(RobyManual, FollowsRemoteButRefusesObstacle) {
   EXPECT_TRUE(obs.wait([&] { return obs.last_.mode == "auto"; }, 5.0, 30.0)) << "did not switch to auto";
   RecordProperty("stopped_at_x", std::to_string(x_stopped));
   RecordProperty("min_clearance_m", std::to_string(obs.min_clearance_));
-  std::printf("manual: stopped at x = %.2f, min clearance %.3f m (%s)\n", x_stopped, obs.min_clearance_,
-              obs.nearest_.c_str());
+  RecordProperty("backed_to_x", std::to_string(x_back));
+  RecordProperty("min_clearance_backing_m", std::to_string(back_clearance));
+  std::printf("manual: backed to x = %.2f (clearance %.3f m); stopped at x = %.2f, min clearance %.3f m (%s)\n",
+              x_back, back_clearance, x_stopped, obs.min_clearance_, obs.nearest_.c_str());
 }
 
 int main(int argc, char** argv) {

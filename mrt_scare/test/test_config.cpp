@@ -138,6 +138,8 @@ TEST(SonarSectors, MinimumPerSector) {
   ASSERT_EQ(s.members()[0].size(), 3u);
   ASSERT_EQ(s.members()[1].size(), 2u);
   ASSERT_EQ(s.members()[3].size(), 2u);  // left: 90, 112.5
+  // back, across 180: 157.5, 180, -157.5 (sonars 7, 8, 9)
+  EXPECT_EQ(s.members()[5], (std::vector<std::size_t>{7, 8, 9}));
   auto d = s.distances();
   for (double v : d) EXPECT_DOUBLE_EQ(v, 5.0);
   EXPECT_TRUE(s.set_range(15, 1.2));  // -22.5 deg: front

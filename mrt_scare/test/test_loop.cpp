@@ -37,7 +37,8 @@ TEST(RuleBase, HandWorkedCycles) {
   auto b = mrt::brian::Brian::from_path(kRoot + "/config/roby/brian");
   const mrt::brian::CrispDataList free = {
       {"ObstacleFront", 500}, {"ObstacleFrontLeft", 500}, {"ObstacleFrontRight", 500},
-      {"ObstacleLeft", 500},  {"ObstacleRight", 500},     {"FreeSide", 0}};
+      {"ObstacleLeft", 500},  {"ObstacleRight", 500},     {"ObstacleBack", 500},
+      {"FreeSide", 0}};
   auto with = [&](mrt::brian::CrispDataList extra) {
     auto v = free;
     for (auto& x : extra) {
@@ -81,6 +82,15 @@ TEST(RuleBase, HandWorkedCycles) {
   // Manual backing away from it is allowed.
   in = with({{"Status", 0}, {"RemoteSpeed", -20}, {"RemoteTurn", 0}, {"ObstacleFront", 30}});
   EXPECT_NEAR(command(*b, in, "Speed"), -20.0, 1e-9);
+  // ... but not into something 30 cm behind (REAR DANGER 1): STOP.
+  in = with({{"Status", 0}, {"RemoteSpeed", -20}, {"RemoteTurn", 0}, {"ObstacleBack", 30}});
+  EXPECT_NEAR(command(*b, in, "Speed"), 0.0, 1e-9);
+  // 60 cm behind is past the danger shape (TOL 30 50 reads 0): back up.
+  in = with({{"Status", 0}, {"RemoteSpeed", -20}, {"RemoteTurn", 0}, {"ObstacleBack", 60}});
+  EXPECT_NEAR(command(*b, in, "Speed"), -20.0, 1e-9);
+  // Forward with something close behind: unaffected.
+  in = with({{"Status", 0}, {"RemoteSpeed", 50}, {"RemoteTurn", 0}, {"ObstacleBack", 30}});
+  EXPECT_NEAR(command(*b, in, "Speed"), 55.0, 1e-9);
 }
 
 TEST(RobyLoop, SixPointRouteWithTwoUnmappedObstacles) {

@@ -8,15 +8,17 @@ namespace mrt::scare {
 
 /// An angular sector of the robot's surroundings (body frame, degrees,
 /// counter-clockwise from ahead). A sonar belongs to a sector when its beam
-/// axis lies in [from, to].
+/// axis lies in [from, to], or, when from > to (a sector across 180 deg,
+/// behind), in [from, 180] or (-180, to].
 struct Sector {
   std::string name;   // crisp datum name, e.g. "ObstacleFront"
   double from_deg = 0.0;
   double to_deg = 0.0;
 };
 
-/// The default five sectors of the Roby rule base: Front [-25, 25],
-/// FrontLeft [25, 70], FrontRight [-70, -25], Left [70, 115], Right [-115, -70].
+/// The default six sectors of the Roby rule base: Front [-25, 25],
+/// FrontLeft [25, 70], FrontRight [-70, -25], Left [70, 115], Right
+/// [-115, -70], Back [145, -145] (across 180).
 std::vector<Sector> default_sectors();
 
 /// Reduces the last reading of every sonar to the minimum range per sector.
