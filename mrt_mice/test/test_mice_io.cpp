@@ -58,6 +58,10 @@ TEST(Params, ErrorsNameTheLine) {
                5, "counts_per_m > 0");
   expect_error("left: {x: 0, y: 0.1, z: 3, counts_per_m: 1000}\n", 1, "unknown key 'z'");
   expect_error("left: [1, 2\n", 2, "");
+  // A misspelt optional key is an error, not a silent default.
+  expect_error(std::string(kParams) + "\ndetection_fatcor: 3\n", 5, "unknown key 'detection_fatcor'");
+  // mice_calibrate's own sections are known.
+  EXPECT_NO_THROW(parse_params(std::string(kParams) + "derived: {D_m: 0.2}\ncalibration: {pushes: 10}\n", "ok.yaml"));
 }
 
 TEST(ReadingsCsv, ParseAndErrors) {
