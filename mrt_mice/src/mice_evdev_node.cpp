@@ -2,7 +2,10 @@
 // mice from Linux evdev devices (grabbed, so the desktop cursor does not
 // move), and publishes their raw counts as mrt_msgs/MiceReading at a fixed
 // rate, exactly as mrt_sim does. Unplugged devices are reopened every
-// ~reconnect_period seconds; diagnostics report each device.
+// ~reconnect_period seconds; diagnostics report each device. While either
+// device is missing no reading is published (a missing mouse is not a mouse
+// standing still): the samples are withheld and counted, and the first
+// sample after a reconnection covers only the motion since then.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <mrt_msgs/MiceReading.h>
 #include <poll.h>
@@ -55,6 +58,7 @@ class MiceEvdevNode {
     diag_.setHardwareID(opt_.left_device + " " + opt_.right_device);
     diag_.add("left mouse", [this](diagnostic_updater::DiagnosticStatusWrapper& s) { diagnose(s, 0); });
     diag_.add("right mouse", [this](diagnostic_updater::DiagnosticStatusWrapper& s) { diagnose(s, 1); });
+    diag_.add("mice readings", this, &MiceEvdevNode::diagnose_readings);
     reader_ = std::thread([this] { read_loop(); });
     timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &MiceEvdevNode::publish, this);
     diag_timer_ = nh.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diag_.update(); });
@@ -77,9 +81,12 @@ class MiceEvdevNode {
         for (int i = 0; i < 2; ++i) {
           EvdevMouse& m = i ? right_ : left_;
           if (!m.connected()) {
-            if (m.open())
+            if (m.open()) {
               ROS_INFO("mice_evdev: opened %s%s", m.path().c_str(), m.grabbed() ? " (grabbed)" : "");
-            else
+              // Both mice start afresh: what the other one counted while this
+              // one was away has no partner and is dropped.
+              discard_counts();
+            } else
               ROS_WARN_THROTTLE(10.0, "mice_evdev: %s", m.last_error().c_str());
           }
         }
@@ -108,6 +115,13 @@ class MiceEvdevNode {
     }
   }
 
+  // Drops the counts accumulated so far (mutex_ held).
+  void discard_counts() {
+    std::int64_t dx, dy;
+    left_acc_.take(&dx, &dy);
+    right_acc_.take(&dx, &dy);
+  }
+
   void publish(const ros::TimerEvent&) {
     mrt_msgs::MiceReading r;
     r.header.stamp = ros::Time::now();
@@ -115,6 +129,15 @@ class MiceEvdevNode {
     std::int64_t ldx, ldy, rdx, rdy;
     {
       std::lock_guard<std::mutex> lock(mutex_);
+      if (!left_.connected() || !right_.connected()) {
+        // A sample needs both mice: publishing zeros for the missing one
+        // would tell the odometry that it stood still.
+        discard_counts();
+        ++withheld_;
+        ROS_WARN_THROTTLE(5.0, "mice_evdev: %s missing; no readings published (%llu withheld)",
+                          missing().c_str(), static_cast<unsigned long long>(withheld_));
+        return;
+      }
       left_acc_.take(&ldx, &ldy);
       right_acc_.take(&rdx, &rdy);
     }
@@ -128,6 +151,27 @@ class MiceEvdevNode {
     fill(r.left, opt_.left_id, ldx, ldy);
     fill(r.right, opt_.right_id, rdx, rdy);
     pub_.publish(r);
+  }
+
+  // The missing devices, e.g. "right mouse /dev/input/..." (mutex_ held).
+  std::string missing() const {
+    std::string out;
+    for (int i = 0; i < 2; ++i) {
+      const EvdevMouse& m = i ? right_ : left_;
+      if (m.connected()) continue;
+      if (!out.empty()) out += " and ";
+      out += std::string(i ? "right" : "left") + " mouse " + m.path();
+    }
+    return out;
+  }
+
+  void diagnose_readings(diagnostic_updater::DiagnosticStatusWrapper& s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!left_.connected() || !right_.connected())
+      s.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "no readings published: missing " + missing());
+    else
+      s.summary(diagnostic_msgs::DiagnosticStatus::OK, "publishing");
+    s.add("withheld samples", withheld_);
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s, int i) {
@@ -151,6 +195,7 @@ class MiceEvdevNode {
   EvdevMouse left_, right_;
   EvdevAccumulator left_acc_, right_acc_;
   std::uint64_t unplugs_[2] = {0, 0};
+  std::uint64_t withheld_ = 0;  // samples not published because a mouse was missing
   std::mutex mutex_;
   std::atomic<bool> stop_{false};
   std::thread reader_;

@@ -53,6 +53,9 @@ MiceParams parse_params(const std::string& text, const std::string& file) {
   const YamlReader r(file);
   const YAML::Node root = r.load(text);
   if (!root.IsMap()) throw ParseError(file, 1, 1, "expected a map with keys 'left' and 'right'");
+  // A misspelt optional key would otherwise silently keep its default.
+  r.map(root, "the parameter file",
+        {"left", "right", "detection_factor", "detection_relative", "derived", "calibration"});
   MiceParams p;
   p.left = mouse(r, root, "left");
   p.right = mouse(r, root, "right");

@@ -11,6 +11,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
@@ -29,7 +30,8 @@ struct NodeOptions {
   std::string frame_prefix;  // ~frame_prefix, e.g. "robot1/"
   bool publish_tf = false;
   int max_count = 100000;    // ~max_count: larger |counts| in one sample are malformed
-  double stale_timeout = 1.0;  // ~stale_timeout: s without readings before diagnostics warn
+  double stale_timeout = 0.25;  // ~stale_timeout: s without readings before diagnostics say so
+  double time_jump_reset = 1.0;  // ~time_jump_reset: a stamp this far back (s) resets the odometry
   OdometryOptions odometry;
 };
 
@@ -43,6 +45,7 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
   pnh.param("publish_tf", o.publish_tf, o.publish_tf);
   pnh.param("max_count", o.max_count, o.max_count);
   pnh.param("stale_timeout", o.stale_timeout, o.stale_timeout);
+  pnh.param("time_jump_reset", o.time_jump_reset, o.time_jump_reset);
   pnh.param("reduce_errors", o.odometry.reduce_errors, o.odometry.reduce_errors);
   pnh.param("var_xy_per_m", o.odometry.var_xy_per_m, o.odometry.var_xy_per_m);
   pnh.param("var_theta_per_rad", o.odometry.var_theta_per_rad, o.odometry.var_theta_per_rad);
@@ -50,6 +53,7 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
   pnh.param("flagged_gain", o.odometry.flagged_gain, o.odometry.flagged_gain);
   if (o.max_count <= 0) throw std::invalid_argument("~max_count: must be > 0");
   if (!(o.stale_timeout > 0.0)) throw std::invalid_argument("~stale_timeout: must be > 0");
+  if (!(o.time_jump_reset > 0.0)) throw std::invalid_argument("~time_jump_reset: must be > 0");
   if (o.odom_frame.empty()) throw std::invalid_argument("~odom_frame: must not be empty");
   if (o.base_frame.empty()) throw std::invalid_argument("~base_frame: must not be empty");
   try {
@@ -92,9 +96,20 @@ class MiceOdometryNode {
     }
     ros::Time stamp = m->header.stamp.isZero() ? ros::Time::now() : m->header.stamp;
     if (have_last_ && stamp < last_stamp_) {
-      ++dropped_;
-      ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading older than the previous one");
-      return;
+      if ((last_stamp_ - stamp).toSec() > opt_.time_jump_reset) {
+        // Time jumped back (a bag played in a loop, the simulator
+        // restarted): start again from the origin instead of dropping
+        // every reading until time passes the old stamp.
+        ++resets_;
+        ROS_WARN("mice_odometry: time jumped back %.3f s; odometry reset (%llu resets)",
+                 (last_stamp_ - stamp).toSec(), static_cast<unsigned long long>(resets_));
+        odo_.reset();
+        have_last_ = false;
+      } else {
+        ++dropped_;
+        ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading older than the previous one");
+        return;
+      }
     }
     MiceCounts c;
     c.left_dx = m->left.dx;
@@ -102,7 +117,11 @@ class MiceOdometryNode {
     c.right_dx = m->right.dx;
     c.right_dy = m->right.dy;
     const StepResult r = odo_.update(c);
-    const double dt = have_last_ ? (stamp - last_stamp_).toSec() : 0.0;
+    // No twist across a gap in the readings: the sample after it need not
+    // cover the whole gap (the driver drops what a mouse did while the
+    // other was unplugged).
+    double dt = have_last_ ? (stamp - last_stamp_).toSec() : 0.0;
+    if (dt > opt_.stale_timeout) dt = 0.0;
     have_last_ = true;
     last_stamp_ = stamp;
     last_wall_ = ros::WallTime::now();
@@ -157,6 +176,12 @@ class MiceOdometryNode {
     stats_pub_.publish(e);
   }
 
+  static std::string seconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", s);
+    return buf;
+  }
+
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
     const ErrorStats& s = odo_.stats();
     const double age = have_last_ ? (ros::WallTime::now() - last_wall_).toSec() : -1.0;
@@ -164,7 +189,8 @@ class MiceOdometryNode {
     if (!have_last_)
       st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no readings yet");
     else if (age > opt_.stale_timeout)
-      st.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "readings stopped");
+      // The pose is kept as it was, not extrapolated.
+      st.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "no mice readings for " + seconds(age) + " s");
     else if (rate > 0.2)
       st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "many samples flagged as erroneous");
     else
@@ -174,6 +200,7 @@ class MiceOdometryNode {
     st.add("corrected", s.corrected);
     st.add("uncorrectable", s.uncorrectable);
     st.add("dropped (malformed)", dropped_);
+    st.add("resets (time jumped back)", resets_);
     st.add("rms residual (m)", s.rms_residual());
     st.add("distance (m)", odo_.distance());
     st.add("seconds since last reading", age);
@@ -191,6 +218,7 @@ class MiceOdometryNode {
   ros::Time last_stamp_;
   ros::WallTime last_wall_;
   std::uint64_t dropped_ = 0;
+  std::uint64_t resets_ = 0;
 };
 
 }  // namespace

@@ -1,6 +1,8 @@
 // rostest of mice_evdev_node: events written to FIFOs (the node reads them
 // as it reads /dev/input/event*) come out as MiceReading counts in the
-// mouse frame; an unplugged device is reported and reconnected.
+// mouse frame; while a device is unplugged no reading is published (and the
+// diagnostics name it); it is reconnected, and the first reading after that
+// holds only the motion since the reconnection.
 #include <fcntl.h>
 #include <linux/input.h>
 #include <sys/stat.h>
@@ -19,7 +21,7 @@ namespace {
 std::string dir;
 long long sum_ldx = 0, sum_ldy = 0, sum_rdx = 0, sum_rdy = 0;
 int readings = 0;
-std::string right_status;
+std::string right_status, readings_status;
 
 void on_mice(const mrt_msgs::MiceReading::ConstPtr& m) {
   sum_ldx += m->left.dx;
@@ -30,8 +32,11 @@ void on_mice(const mrt_msgs::MiceReading::ConstPtr& m) {
 }
 
 void on_diag(const diagnostic_msgs::DiagnosticArray::ConstPtr& d) {
-  for (const auto& s : d->status)
+  for (const auto& s : d->status) {
     if (s.name.find("right mouse") != std::string::npos) right_status = s.message;
+    if (s.name.find("mice readings") != std::string::npos)
+      readings_status = std::to_string(s.level) + " " + s.message;
+  }
 }
 
 // Plugs a "device" in: a FIFO held open read-write by the test, so that the
@@ -97,19 +102,38 @@ TEST(MiceEvdevNode, PublishesCountsAndReconnects) {
   EXPECT_EQ(sum_rdx, 0);
   EXPECT_EQ(sum_rdy, 30);
 
-  // Unplug the right mouse: diagnostics say so, readings go on.
+  // Unplug the right mouse: diagnostics say so (ERROR naming the device),
+  // and no reading is published while it is away, although the left mouse
+  // moves: it is not a mouse standing still.
   ::close(rw);
   ::unlink(right.c_str());
   EXPECT_TRUE(wait_for([] { return right_status.find("disconnected") == 0; }, 5.0)) << right_status;
+  const std::string error = std::to_string(diagnostic_msgs::DiagnosticStatus::ERROR) +
+                            " no readings published: missing right mouse " + right;
+  EXPECT_TRUE(wait_for([&] { return readings_status == error; }, 5.0)) << readings_status;
   const int before = readings;
-  EXPECT_TRUE(wait_for([&] { return readings > before + 5; }, 5.0));
-  // Plug it back: the node reopens it.
+  for (int i = 0; i < 5; ++i) {
+    event(lw, EV_REL, REL_Y, -100);  // left pushed 500 counts during the outage
+    event(lw, EV_SYN, SYN_REPORT, 0);
+  }
+  spin_for(1.0);  // 50 publication periods
+  EXPECT_EQ(readings, before) << "readings published while the right mouse was unplugged";
+  EXPECT_EQ(sum_ldx, 120) << "the outage's left counts were published";
+  // Plug it back: the node reopens it and publishes again; the first
+  // readings hold only what both mice did after the reconnection.
   const int rw2 = plug(right);
   ASSERT_GE(rw2, 0);
   event(rw2, EV_REL, REL_Y, 7);  // pulled backwards
   event(rw2, EV_SYN, SYN_REPORT, 0);
   EXPECT_TRUE(wait_for([] { return sum_rdx == -7; }, 5.0)) << sum_rdx;
+  EXPECT_GT(readings, before);
+  event(lw, EV_REL, REL_Y, -3);
+  event(lw, EV_SYN, SYN_REPORT, 0);
+  EXPECT_TRUE(wait_for([] { return sum_ldx == 123; }, 5.0)) << sum_ldx << " (120 + 3 expected)";
+  spin_for(0.2);
+  EXPECT_EQ(sum_ldx, 123);
   EXPECT_TRUE(wait_for([] { return right_status.find("disconnected") != 0; }, 5.0)) << right_status;
+  EXPECT_TRUE(wait_for([] { return readings_status == "0 publishing"; }, 5.0)) << readings_status;
   ::close(rw2);
   ::close(lw);
   ::unlink(left.c_str());

@@ -1,12 +1,14 @@
 // rostest of mice_odometry_node on mrt_sim: over a 20 m drive of straight
 // legs and arcs the odometry stays within 1 % of the distance from the
-// ground truth, with no sample flagged (no faults are injected).
+// ground truth, with no sample flagged (no faults are injected), and the
+// tf odom -> base_link (~publish_tf) carries the odometry's pose.
 #include <cmath>
 
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/MiceErrorStats.h>
 #include <nav_msgs/Odometry.h>
+#include <tf2_msgs/TFMessage.h>
 #include <ros/ros.h>
 
 #include "mrt_common/pose2d.h"
@@ -80,9 +82,13 @@ TEST(MiceOdometryNode, Follows20mDriveWithin1Percent) {
     ros::WallDuration(0.002).sleep();
   }
   ASSERT_GE(gt_path, distance) << "the drive did not finish";
-  // Stop and let the last samples arrive.
+  // Stop and let the last samples arrive: 0.5 s of sim time, and until the
+  // odometry and the ground truth have both caught up with the stop (on a
+  // loaded machine the odometry node may be some samples behind).
   const ros::Time stop = ros::Time::now();
-  while (ros::ok() && (ros::Time::now() - stop).toSec() < 0.5 &&
+  const ros::Time settled = stop + ros::Duration(0.3);
+  while (ros::ok() &&
+         ((ros::Time::now() - stop).toSec() < 0.5 || odom.header.stamp < settled || gt.header.stamp < settled) &&
          ros::WallTime::now() < wall_limit + ros::WallDuration(10.0)) {
     cmd.publish(geometry_msgs::Twist());
     ros::spinOnce();
@@ -104,6 +110,29 @@ TEST(MiceOdometryNode, Follows20mDriveWithin1Percent) {
   EXPECT_EQ(odom.header.frame_id, robot + "/odom");
   EXPECT_EQ(odom.child_frame_id, robot + "/base_link");
   EXPECT_GT(odom.pose.covariance[0], 0.0);
+  // tf (~publish_tf), listened to only now so that the simulator's busy
+  // /tf does not slow the drive down: the robot stands still, the tf and
+  // the odometry hold the same pose.
+  geometry_msgs::TransformStamped tf;
+  int n_tf = 0;
+  auto sub_tf = nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
+    for (const auto& t : m->transforms)
+      if (t.header.frame_id == robot + "/odom" && t.child_frame_id == robot + "/base_link") {
+        tf = t;
+        ++n_tf;
+      }
+  });
+  const ros::WallTime tf_limit = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (ros::ok() && n_tf < 5 && ros::WallTime::now() < tf_limit) {
+    cmd.publish(geometry_msgs::Twist());
+    ros::spinOnce();
+    ros::WallDuration(0.002).sleep();
+  }
+  ASSERT_GE(n_tf, 5) << "no tf " << robot << "/odom -> " << robot << "/base_link";
+  EXPECT_NEAR(tf.transform.translation.x, odom.pose.pose.position.x, 1e-9);
+  EXPECT_NEAR(tf.transform.translation.y, odom.pose.pose.position.y, 1e-9);
+  EXPECT_NEAR(tf.transform.rotation.z, odom.pose.pose.orientation.z, 1e-9);
+  EXPECT_NEAR(tf.transform.rotation.w, odom.pose.pose.orientation.w, 1e-9);
 }
 
 }  // namespace

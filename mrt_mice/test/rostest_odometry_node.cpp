@@ -1,7 +1,11 @@
 // rostest of mice_odometry_node fed by hand: 10 samples turning 0.03 rad in
 // place, 10 samples of 1 cm straight ahead (manual placement, D = 0.2 m,
-// 10000 counts/m), one inconsistent sample and one malformed one.
+// 10000 counts/m), one inconsistent sample and one malformed one; a stamp
+// far in the past (a bag loop) resets the odometry; when the readings stop
+// the diagnostics say so and the pose stays where it was.
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
@@ -28,7 +32,8 @@ TEST(MiceOdometryNode, HandComputedReadings) {
   int n_odom = 0;
   nav_msgs::Odometry odom;
   mrt_msgs::MiceErrorStats stats;
-  std::string dropped;
+  std::string dropped, resets, summary;
+  int level = -1;
   auto so = nh.subscribe<nav_msgs::Odometry>("/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& m) {
     odom = *m;
     ++n_odom;
@@ -37,9 +42,15 @@ TEST(MiceOdometryNode, HandComputedReadings) {
       "/mice_errors", 100, [&](const mrt_msgs::MiceErrorStats::ConstPtr& m) { stats = *m; });
   auto sd = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
       "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& d) {
-        for (const auto& s : d->status)
-          for (const auto& kv : s.values)
+        for (const auto& s : d->status) {
+          if (s.name.find("mice odometry") == std::string::npos) continue;
+          level = s.level;
+          summary = s.message;
+          for (const auto& kv : s.values) {
             if (kv.key == "dropped (malformed)") dropped = kv.value;
+            if (kv.key == "resets (time jumped back)") resets = kv.value;
+          }
+        }
       });
   auto pub = nh.advertise<mrt_msgs::MiceReading>("/mice", 100);
   ASSERT_TRUE(wait_for([&] { return pub.getNumSubscribers() > 0 && so.getNumPublishers() > 0; }, 20.0));
@@ -86,6 +97,48 @@ TEST(MiceOdometryNode, HandComputedReadings) {
   EXPECT_EQ(n_odom, 22);
   EXPECT_EQ(stats.samples, 22u);
   EXPECT_TRUE(wait_for([&] { return dropped == "1"; }, 5.0)) << dropped;
+
+  // 0.5 s back (below ~time_jump_reset = 1 s): dropped, not integrated.
+  t -= ros::Duration(0.52);
+  send(0, 100, 0, 100);
+  t += ros::Duration(0.5);
+  wait_for([&] { return false; }, 0.3);
+  EXPECT_EQ(n_odom, 22);
+  EXPECT_TRUE(wait_for([&] { return dropped == "2"; }, 5.0)) << dropped;
+
+  // A bag loop: 50 s back. The odometry starts again from the origin with
+  // this sample: 1 cm ahead, one sample, nothing flagged.
+  t -= ros::Duration(50.0);
+  send(0, 100, 0, 100);
+  ASSERT_TRUE(wait_for([&] { return n_odom == 23; }, 10.0));
+  EXPECT_NEAR(odom.pose.pose.position.x, 0.01, 1e-12);
+  EXPECT_NEAR(odom.pose.pose.position.y, 0.0, 1e-12);
+  EXPECT_NEAR(odom.pose.pose.orientation.z, 0.0, 1e-12);
+  EXPECT_EQ(stats.samples, 1u);
+  EXPECT_EQ(stats.flagged_samples, 0u);
+  EXPECT_NEAR(odom.header.stamp.toSec(), t.toSec(), 1e-6);
+  EXPECT_TRUE(wait_for([&] { return resets == "1"; }, 5.0)) << resets;
+
+  // Readings stop: after ~stale_timeout (0.5 s here) the diagnostics say
+  // ERROR "no mice readings for X s"; nothing is extrapolated meanwhile.
+  EXPECT_TRUE(wait_for([&] { return level == diagnostic_msgs::DiagnosticStatus::ERROR; }, 5.0))
+      << level << " " << summary;
+  EXPECT_EQ(summary.rfind("no mice readings for ", 0), 0u) << summary;
+  const double stale_for = std::atof(summary.c_str() + std::strlen("no mice readings for "));
+  EXPECT_GT(stale_for, 0.5) << summary;
+  EXPECT_LT(stale_for, 10.0) << summary;
+  EXPECT_EQ(n_odom, 23);
+  // Readings come back: OK again, the pose goes on from where it stopped.
+  // (one every 0.1 s for 2 s, so that a 1 Hz diagnostics update sees them)
+  bool ok_seen = false;
+  for (int i = 0; i < 20; ++i) {
+    send(0, 100, 0, 100);
+    ok_seen = wait_for([&] { return level == diagnostic_msgs::DiagnosticStatus::OK; }, 0.1) || ok_seen;
+  }
+  ASSERT_TRUE(wait_for([&] { return n_odom == 43; }, 10.0)) << n_odom;
+  EXPECT_NEAR(odom.pose.pose.position.x, 0.01 * 21, 1e-12);
+  EXPECT_TRUE(ok_seen || wait_for([&] { return level == diagnostic_msgs::DiagnosticStatus::OK; }, 0.3))
+      << level << " " << summary;
 }
 
 }  // namespace

@@ -187,6 +187,90 @@ TEST(ArcModel, GeneralPlacementExactArc) {
   EXPECT_NEAR(s.residual, 0.0, 1e-12);
 }
 
+// A general placement worked out by hand (not from predict_counts): left
+// mouse at (0.1, 0.1) turned +90 degrees (its x axis along the body's y),
+// right mouse at (-0.1, -0.05) turned 180 degrees (facing backwards),
+// 10000 counts/m. A mouse reads m_i = R(-phi_i) (V + dtheta J p_i), with
+// R(-90)(x, y) = (y, -x), R(-180)(x, y) = (-x, -y), J(x, y) = (-y, x).
+// Joining line p_r - p_l = (-0.2, -0.15): D = 0.25, e = (-0.8, -0.6).
+MiceParams hand_placement() {
+  MiceParams p;
+  p.left.mount = Pose2D(0.1, 0.1, M_PI / 2);
+  p.right.mount = Pose2D(-0.1, -0.05, M_PI);
+  p.left.counts_per_m = p.right.counts_per_m = kC;
+  return p;
+}
+
+TEST(ArcModel, GeneralPlacementRotationInPlaceByHand) {
+  // 0.2 rad about base_link: left 0.2 J p_l = (-0.02, 0.02) m, read as
+  // (0.02, 0.02) m = (200, 200) counts; right 0.2 J p_r = (0.01, -0.02) m,
+  // read as (-0.01, 0.02) m = (-100, 200) counts.
+  ArcModel m(hand_placement());
+  const Point2D ul = m.left_in_body(200, 200), ur = m.right_in_body(-100, 200);
+  EXPECT_NEAR(ul.x, -0.02, 1e-15);
+  EXPECT_NEAR(ul.y, 0.02, 1e-15);
+  EXPECT_NEAR(ur.x, 0.01, 1e-15);
+  EXPECT_NEAR(ur.y, -0.02, 1e-15);
+  MiceCounts c;
+  c.left_dx = 200;
+  c.left_dy = 200;
+  c.right_dx = -100;
+  c.right_dy = 200;
+  const ArcSolution s = m.solve(c);
+  EXPECT_NEAR(s.dtheta, 0.2, 1e-12);
+  EXPECT_NEAR(s.delta.theta, 0.2, 1e-12);
+  EXPECT_NEAR(s.delta.x, 0.0, 1e-12);
+  EXPECT_NEAR(s.delta.y, 0.0, 1e-12);
+  EXPECT_NEAR(s.residual, 0.0, 1e-12);
+  // Arc lengths: |p_l| 0.2 = 0.02 sqrt 2, |p_r| 0.2 = 0.2 sqrt(0.0125).
+  EXPECT_NEAR(s.length_left, 0.02 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(s.length_right, 0.2 * std::sqrt(0.0125), 1e-12);
+}
+
+TEST(ArcModel, GeneralPlacementSidewaysTranslationByHand) {
+  // 5 cm to the left (V = (0, 0.05)): left reads R(-90)(0, 0.05) =
+  // (0.05, 0) = (500, 0); right reads R(-180)(0, 0.05) = (0, -500).
+  ArcModel m(hand_placement());
+  MiceCounts c;
+  c.left_dx = 500;
+  c.right_dy = -500;
+  ArcSolution s = m.solve(c);
+  EXPECT_NEAR(s.dtheta, 0.0, 1e-12);
+  EXPECT_NEAR(s.delta.x, 0.0, 1e-12);
+  EXPECT_NEAR(s.delta.y, 0.05, 1e-12);
+  EXPECT_NEAR(s.residual, 0.0, 1e-12);
+  // Each mouse enters the residual: 10 more counts on the left's x axis
+  // move it (0, 1 mm) in the body: residual -(0, 0.001).e = +0.6 mm; 10
+  // more on the right's x axis move it (-1 mm, 0): +(-0.001, 0).e = +0.8 mm.
+  c.left_dx = 510;
+  s = m.solve(c);
+  EXPECT_NEAR(s.residual, 0.0006, 1e-12);
+  c.left_dx = 500;
+  c.right_dx = 10;
+  s = m.solve(c);
+  EXPECT_NEAR(s.residual, 0.0008, 1e-12);
+}
+
+TEST(ArcModel, GeneralPlacementArcByHand) {
+  // V = (0.05, 0), dtheta = 0.2: left moves (0.05 - 0.02, 0.02) = (0.03,
+  // 0.02) m, reads (0.02, -0.03) = (200, -300); right moves (0.05 + 0.01,
+  // -0.02), reads (-0.06, 0.02) = (-600, 200). The chord of the arc:
+  // (0.05 sin 0.2 / 0.2, 0.05 (1 - cos 0.2) / 0.2).
+  ArcModel m(hand_placement());
+  MiceCounts c;
+  c.left_dx = 200;
+  c.left_dy = -300;
+  c.right_dx = -600;
+  c.right_dy = 200;
+  const ArcSolution s = m.solve(c);
+  EXPECT_NEAR(s.dtheta, 0.2, 1e-12);
+  EXPECT_NEAR(s.vx_dt, 0.05, 1e-12);
+  EXPECT_NEAR(s.vy_dt, 0.0, 1e-12);
+  EXPECT_NEAR(s.delta.x, 0.25 * std::sin(0.2), 1e-12);
+  EXPECT_NEAR(s.delta.y, 0.25 * (1.0 - std::cos(0.2)), 1e-12);
+  EXPECT_NEAR(s.residual, 0.0, 1e-12);
+}
+
 TEST(ArcModel, PredictCountsHandValues) {
   // Left mouse at (0.12, 0.08) turned 10 deg: pure rotation 1 rad/s for 1 s
   // moves it by J p = (-0.08, 0.12) m, read in its frame as R(-10deg) of that.

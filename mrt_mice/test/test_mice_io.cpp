@@ -1,10 +1,13 @@
 // File formats and the command-line tools.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,6 +29,16 @@ TEST(Params, Parse) {
   EXPECT_EQ(p.left.counts_per_m, 10000.0);
   EXPECT_EQ(p.detection_factor, 2.0);
   EXPECT_EQ(p.detection_relative, 0.0);
+}
+
+TEST(Params, ShippedConfigurationsLoad) {
+  // config/mice: side by side (Fig. 4.1) and the staggered example.
+  const std::string dir = std::string(MRT_MICE_TEST_DATA) + "/../../../config/mice/";
+  const MiceParams side = load_params(dir + "ianus3.yaml");
+  EXPECT_NEAR(side.distance(), 0.2, 1e-12);
+  const MiceParams staggered = load_params(dir + "ianus3_staggered.yaml");
+  // |(-0.24, -0.04)| = sqrt(0.0592)
+  EXPECT_NEAR(staggered.distance(), std::sqrt(0.0592), 1e-12);
 }
 
 TEST(Params, RoundTripThroughWriter) {
@@ -58,6 +71,10 @@ TEST(Params, ErrorsNameTheLine) {
                5, "counts_per_m > 0");
   expect_error("left: {x: 0, y: 0.1, z: 3, counts_per_m: 1000}\n", 1, "unknown key 'z'");
   expect_error("left: [1, 2\n", 2, "");
+  // A misspelt optional key is an error, not a silent default.
+  expect_error(std::string(kParams) + "\ndetection_fatcor: 3\n", 5, "unknown key 'detection_fatcor'");
+  // mice_calibrate's own sections are known.
+  EXPECT_NO_THROW(parse_params(std::string(kParams) + "derived: {D_m: 0.2}\ncalibration: {pushes: 10}\n", "ok.yaml"));
 }
 
 TEST(ReadingsCsv, ParseAndErrors) {
@@ -124,32 +141,50 @@ TEST(Tools, MiceOdometryRunsAndReportsBadLines) {
   const std::string params = tmp("params.yaml"), in = tmp("in.csv"), out = tmp("out.csv");
   std::ofstream(params) << kParams;
   {
-    // 10 samples of 0.3 rad/10 in place, then 10 of 1 cm straight ahead.
+    // Manual placement (mouse y axes forward), 10000 counts/m: 10 samples
+    // of 0.03 rad in place (each mouse runs 0.1 m * 0.03 = 3 mm = 30
+    // counts, the right one forward), then 10 of 1 cm straight ahead.
     std::ofstream f(in);
     f << "t,left_dx,left_dy,right_dx,right_dy\n";
     for (int i = 0; i < 10; ++i) f << i * 0.02 << ",0,-30,0,30\n";
-    f << "0.2,40,100,0,100\n";  // left reads 4 mm across the line: flagged
+    for (int i = 10; i < 20; ++i) f << i * 0.02 << ",0,100,0,100\n";
+    f << "0.4,40,100,0,100\n";  // left reads 4 mm across the line: flagged
   }
   const std::string tool = std::string(MRT_MICE_TOOL_DIR) + "/mice_odometry";
   ASSERT_EQ(run(tool + " --params " + params + " --in " + in + " --out " + out), 0)
       << slurp(kStderr);
   std::istringstream res(slurp(out));
-  std::string line, last;
+  std::string line;
   std::getline(res, line);
   EXPECT_EQ(line, "t,x,y,theta,flag");
-  int n = 0;
+  std::vector<std::vector<double>> rows;
   while (std::getline(res, line)) {
-    last = line;
-    ++n;
+    std::vector<double> v;
+    std::istringstream ls(line);
+    std::string field;
+    while (std::getline(ls, field, ',')) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 5u) << line;
+    rows.push_back(v);
   }
-  EXPECT_EQ(n, 11);
-  EXPECT_EQ(last.substr(last.size() - 2), ",1") << last;
-  EXPECT_NEAR(std::stod(last.substr(0, last.find(','))), 0.2, 1e-12) << last;
+  ASSERT_EQ(rows.size(), 21u);
+  for (int i = 0; i < 20; ++i) {
+    // By hand: theta = 0.03 (i + 1) while turning, then 0.3; the straight
+    // samples go 1 cm each along the heading 0.3 rad.
+    const double theta = 0.03 * std::min(i + 1, 10);
+    const double d = 0.01 * std::max(i - 9, 0);
+    EXPECT_NEAR(rows[i][0], 0.02 * i, 1e-12) << "row " << i;
+    EXPECT_NEAR(rows[i][1], d * std::cos(0.3), 1e-12) << "row " << i;
+    EXPECT_NEAR(rows[i][2], d * std::sin(0.3), 1e-12) << "row " << i;
+    EXPECT_NEAR(rows[i][3], theta, 1e-12) << "row " << i;
+    EXPECT_EQ(rows[i][4], 0.0) << "row " << i;
+  }
+  EXPECT_NEAR(rows[20][0], 0.4, 1e-12);
+  EXPECT_EQ(rows[20][4], 1.0);
 
-  std::ofstream(in, std::ios::app) << "0.22,1,x,3,4\n";
+  std::ofstream(in, std::ios::app) << "0.42,1,x,3,4\n";
   EXPECT_EQ(run(tool + " --params " + params + " --in " + in + " --out " + out), 2);
   const std::string err = slurp(kStderr);
-  EXPECT_NE(err.find(in + ":13:8:"), std::string::npos) << err;
+  EXPECT_NE(err.find(in + ":23:8:"), std::string::npos) << err;
   EXPECT_EQ(run(tool + " --params /nonexistent.yaml --in " + in + " --out " + out), 2);
   EXPECT_EQ(run(tool + " --in " + in), 2);
 }

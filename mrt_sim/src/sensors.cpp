@@ -106,10 +106,14 @@ bool MouseModel::step(const Twist2D& t, double dt, std::mt19937_64& rng) {
   }
   acc_x_ += d.x * scale;
   acc_y_ += d.y * scale;
-  // Move whole counts out, keeping the remainder; the 1e-9 count tolerance
-  // absorbs rounding of sums such as 100 x 0.3.
-  const double wx = std::trunc(acc_x_ + std::copysign(1e-9, acc_x_));
-  const double wy = std::trunc(acc_y_ + std::copysign(1e-9, acc_y_));
+  // Move whole counts out, keeping the remainder in [0, 1) (floor, as a
+  // position encoder does): the counts read so far are always the floor of
+  // the true total, so every report is off by less than one count, also
+  // when the motion reverses (truncation towards zero would keep a
+  // remainder in (-1, 1) and could be off by almost two counts then). The
+  // 1e-9 count tolerance absorbs rounding of sums such as 100 x 0.3.
+  const double wx = std::floor(acc_x_ + 1e-9);
+  const double wy = std::floor(acc_y_ + 1e-9);
   out_x_ += static_cast<int>(wx);
   out_y_ += static_cast<int>(wy);
   acc_x_ -= wx;

@@ -71,10 +71,10 @@ TEST(Mouse, DisplacementOfRotationInPlace) {
 
 TEST(Mouse, CountsOfRotationInPlace) {
   // 1000 steps of 1 ms at pi/2 rad/s: dx = -0.1 * pi/2 m * 15748 counts/m
-  // = -2473.69 counts: -2473 whole counts read, -0.69 kept; dy = 0.
+  // = -2473.69 counts: floor, -2474 whole counts read, +0.31 kept; dy = 0.
   MouseModel m(mouse(0.0, 0.1, 0.0, 15748.0));
   const auto c = drive(m, {0.0, 0.0, kPi / 2}, 0.001, 1000);
-  EXPECT_EQ(c.first, -2473);
+  EXPECT_EQ(c.first, -2474);
   EXPECT_EQ(c.second, 0);
 }
 
@@ -93,11 +93,11 @@ TEST(Mouse, CountsOfArc) {
   // Body velocity of the point: (0.5 - 0.25 * 0.1, 0.25 * 0.1) = (0.475, 0.025).
   // In the mouse frame: x = cos30 * 0.475 + sin30 * 0.025 = 0.4238620668,
   //                     y = -sin30 * 0.475 + cos30 * 0.025 = -0.2158493649 m/s.
-  // Times 4 s times 1000 counts/m: 1695.448 -> 1695, -863.397 -> -863.
+  // Times 4 s times 1000 counts/m: floor, 1695.448 -> 1695, -863.397 -> -864.
   MouseModel m(mouse(0.1, 0.1, 30.0, 1000.0));
   const auto c = drive(m, {0.5, 0.0, 0.25}, 0.001, 4000);
   EXPECT_EQ(c.first, 1695);
-  EXPECT_EQ(c.second, -863);
+  EXPECT_EQ(c.second, -864);
 }
 
 TEST(Mouse, RemainderIsCarried) {
@@ -120,6 +120,39 @@ TEST(Mouse, RemainderIsCarried) {
   }
   EXPECT_EQ(total, 30);
   EXPECT_EQ(dy, 0);
+}
+
+TEST(Mouse, EveryReportWithinOneCountWhenTheMotionReverses) {
+  // 1 count/m, read after every step. -0.7: total -0.7, floor -1, report
+  // -1 (off by 0.3). +1.4: total 0.7, floor 0, report +1 (off by 0.4).
+  // -1.4: total -0.7, report -1 (off by 0.4). Truncation towards zero would
+  // report 0, 0, 0: off by 1.4 counts on the last two, beyond the one count
+  // the error detector of mrt_mice allows per axis and sample.
+  MouseModel m(mouse(0.0, 0.0, 0.0, 1.0));
+  std::mt19937_64 rng(1);
+  int dx = 0, dy = 0;
+  m.step({-0.7, 0.0, 0.0}, 1.0, rng);  // total -0.7
+  m.read(dx, dy);
+  EXPECT_EQ(dx, -1);
+  m.step({1.4, 0.0, 0.0}, 1.0, rng);  // total 0.7: floor 0, report +1
+  m.read(dx, dy);
+  EXPECT_EQ(dx, 1);
+  m.step({-1.4, 0.0, 0.0}, 1.0, rng);  // total -0.7: floor -1, report -1
+  m.read(dx, dy);
+  EXPECT_EQ(dx, -1);
+  // Random back-and-forth: each report within one count of the true motion.
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  double total = -0.7;
+  long read_total = -1;
+  for (int i = 0; i < 10000; ++i) {
+    const double v = u(rng);
+    m.step({v, 0.0, 0.0}, 1.0, rng);
+    total += v;
+    m.read(dx, dy);
+    read_total += dx;
+    ASSERT_LT(std::fabs(dx - v), 1.0 + 1e-6) << "step " << i;
+    ASSERT_EQ(read_total, static_cast<long>(std::floor(total + 1e-9))) << "step " << i;
+  }
 }
 
 TEST(Mouse, FaultShortensLengthKeepsDirection) {

@@ -79,8 +79,8 @@ TEST(Simulator, SensorsFireOnWholeStepPeriods) {
 
 TEST(Simulator, MiceSamplesAddUpToTheModel) {
   // Rotation in place at pi/2 rad/s for 1 s, mice at (0, +-0.1) facing
-  // forward: left dx = -0.1 * pi/2 * 15748 = -2473.69 -> -2473 counts read
-  // in all, right +2473; dy = 0.
+  // forward: left dx = -0.1 * pi/2 * 15748 = -2473.69 -> floor -2474
+  // counts read in all, right +2473.69 -> floor +2473; dy = 0.
   Simulator sim = make("", "  - name: r\n    base: ianus3\n    pose: [0, 0, 0]\n"
                            "    sensors: {mice: {counts_per_m: 15748}}\n");
   sim.set_twist(0, {0.0, 0.0, kPi / 2});
@@ -97,7 +97,7 @@ TEST(Simulator, MiceSamplesAddUpToTheModel) {
     EXPECT_FALSE(r.mice.left_fault);
   }
   EXPECT_EQ(samples, 50);
-  EXPECT_EQ(ldx, -2473);
+  EXPECT_EQ(ldx, -2474);
   EXPECT_EQ(ldy, 0);
   EXPECT_EQ(rdx, 2473);
 }

@@ -33,9 +33,11 @@ struct Reduction {
 /// the better mouse's loss only).
 ///
 /// When the short mouse's projection is too small to carry a scale (it read
-/// nearly nothing, or moved almost across the line), its direction is taken
-/// from the last consistent sample (constant velocities between samples)
-/// and its length chosen to satisfy the constraint.
+/// nearly nothing, or moved almost across the line), it is rebuilt from the
+/// last consistent sample (constant velocities between samples): that
+/// sample's direction of the bad mouse, and its length ratio to the good
+/// mouse applied to the good mouse's length now. The constraint is not
+/// enforced on the rebuilt sample (it holds if the motion did not change).
 class ErrorReducer {
  public:
   /// `min_projection`: projections (m) below this are not scaled; `max_scale`

@@ -18,8 +18,9 @@ namespace mrt::sim {
 Point2D mouse_displacement(const Pose2D& mount, const Twist2D& t, double dt);
 
 /// An optical mouse producing integer counts: keeps the sub-count remainder
-/// between reports as a real sensor does, so counts summed over many steps
-/// equal round(total displacement * counts_per_m) within one count.
+/// between reports as a real sensor does: the counts read so far are the
+/// floor of the total displacement * counts_per_m, so each report is off by
+/// less than one count per axis whatever the motion.
 class MouseModel {
  public:
   explicit MouseModel(MouseConfig cfg) : cfg_(std::move(cfg)) {}
