@@ -323,7 +323,9 @@ class AirboardNode {
       return;
     }
     const bool fresh = source_ != Source::kNone && (now_t - last_cmd_).toSec() <= o_.cmd_timeout;
-    const double dt = last_control_ > 0.0 ? now - last_control_ : 1.0 / o_.rate;
+    // While the board reports it stopped, each command is the first step of
+    // the ramp at the nominal period, so repeated ones are identical.
+    const double dt = last_control_ > 0.0 && !limiter_.board_stopped() ? now - last_control_ : 1.0 / o_.rate;
     last_control_ = now;
     if (fresh && source_ == Source::kWheelPwm) {
       std::vector<double> d = wheel_cmd_;
@@ -336,7 +338,15 @@ class AirboardNode {
         ++commands_saturated_;
         ROS_WARN_THROTTLE(5.0, "airboard_node: wheel_cmd duty beyond +-1 clamped");
       }
-      limiter_.reset();
+      // A later twist ramps from the wheels' measured speeds (open loop: no
+      // set-point is in force).
+      if (have_state_ && last_state_.motors.size() == n_) {
+        std::vector<double> measured(n_);
+        for (std::size_t i = 0; i < n_; ++i) measured[i] = last_state_.motors[i].speed;
+        limiter_.hold(measured);
+      } else {
+        limiter_.reset();
+      }
       send(make_set_pwm(seq_++, d));
       ++commands_sent_;
       return;
@@ -433,6 +443,7 @@ class AirboardNode {
       ++unexpected_frames_;
       return;
     }
+    note_board_status(s.status);
     counters_ = BoardCounters{s.since_cmd_ms, s.frames_bad, s.watchdog_trips};
     have_counters_ = true;
     if (!tracker_.update(s, now.toSec())) {
@@ -443,6 +454,12 @@ class AirboardNode {
     publish_state(s);
   }
 
+  // A state with the WATCHDOG bit: the board zeroed its set-points and
+  // applied none of the commands sent since (the bit is latched until one
+  // is): the acceleration ramp restarts from rest, not from the old target.
+  // The first state without the bit releases it.
+  void note_board_status(uint8_t status) { limiter_.set_board_stopped((status & proto::kStatusWatchdog) != 0); }
+
   // SHORT_STATE: clock and counts unwrapped by the tracker, set-points and
   // status from the board; the measured speed is computed here from the
   // counts (over >= 10 ms), the duty is not carried (NaN), the counters are
@@ -452,6 +469,7 @@ class AirboardNode {
       ++unexpected_frames_;
       return;
     }
+    note_board_status(ss.status);
     if (!tracker_.update_short(ss, now.toSec(), short_max_gap_ms())) return;
     if (tracker_.rebased()) {
       odom_.reset();
