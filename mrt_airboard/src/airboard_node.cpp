@@ -152,6 +152,12 @@ class AirboardNode {
 
   // ------------------------------------------------------------ inputs
   void on_cmd_vel(const geometry_msgs::Twist& m) {
+    if (!std::isfinite(m.linear.x) || !std::isfinite(m.linear.y) || !std::isfinite(m.angular.z)) {
+      ++dropped_inputs_;
+      ROS_WARN_THROTTLE(5.0, "airboard_node: dropped a cmd_vel with a non-finite component (%g, %g, %g)",
+                        m.linear.x, m.linear.y, m.angular.z);
+      return;
+    }
     twist_ = Twist2D{m.linear.x, m.linear.y, m.angular.z};
     source_ = Source::kTwist;
     last_cmd_ = ros::Time::now();
@@ -160,7 +166,14 @@ class AirboardNode {
   void on_brian(const mrt_msgs::CommandArray& m) {
     std::vector<std::pair<std::string, double>> c;
     for (const auto& x : m.commands) c.emplace_back(x.name, x.value);
-    twist_ = brian_.to_twist(c);
+    const auto t = brian_.to_twist(c);
+    if (!t) {
+      ++dropped_inputs_;
+      ROS_WARN_THROTTLE(5.0, "airboard_node: dropped a brian_commands array with a non-finite %s, %s or %s",
+                        o_.brian.speed_name.c_str(), o_.brian.angle_name.c_str(), o_.brian.rotation_name.c_str());
+      return;
+    }
+    twist_ = *t;
     source_ = Source::kTwist;
     last_cmd_ = ros::Time::now();
   }
