@@ -203,9 +203,10 @@ class AirboardNode {
       ROS_WARN_THROTTLE(5.0, "airboard_node: %s (retrying, next delay %.1f s)", e.what(), backoff_.current_delay());
       return;
     }
-    backoff_.succeeded();
-    if (ever_connected_) ++reconnects_;
-    ever_connected_ = true;
+    // The back-off is reset by the board's first valid frame (on_frame), not
+    // here: a port that opens but stays silent keeps backing off.
+    ++port_opens_;
+    answered_ = false;
     dec_.clear();
     opened_at_ = now;
     last_frame_ = -1.0;
@@ -407,6 +408,12 @@ class AirboardNode {
     const ros::Time now = ros::Time::now();
     last_frame_ = now.toSec();
     link_up_ = true;
+    if (!answered_) {
+      answered_ = true;
+      backoff_.succeeded();
+      if (ever_answered_) ++reconnects_;
+      ever_answered_ = true;
+    }
     BoardState s;
     ShortState ss;
     BoardCounters c;
@@ -638,6 +645,8 @@ class AirboardNode {
     d.add("unexpected frames", unexpected_frames_);
     d.add("board frames bad", have_state_ ? last_state_.frames_bad : 0);
     d.add("reconnects", reconnects_);
+    d.add("port opens", port_opens_);
+    d.add("next reconnect delay (s)", backoff_.current_delay());
     d.add("commands sent", commands_sent_);
     d.add("commands clamped (speed limit)", commands_saturated_);
     d.add("inputs dropped", dropped_inputs_);
@@ -690,7 +699,9 @@ class AirboardNode {
   double last_control_ = 0.0;
 
   bool link_up_ = false;
-  bool ever_connected_ = false;
+  bool answered_ = false;       // a valid frame arrived since the port was opened
+  bool ever_answered_ = false;
+  uint64_t port_opens_ = 0;
   double opened_at_ = 0.0;
   double last_frame_ = -1.0;
   bool info_ok_ = false;
