@@ -1,5 +1,5 @@
 // AIRBoard benchmark: frames decoded per second (clean and with 1 % of the
-// bytes corrupted: 10 % would leave almost no intact 66-byte frame) against a memchr scan of the same bytes as the in-run
+// bytes corrupted: 10 % would leave almost no intact 64-byte frame) against a memchr scan of the same bytes as the in-run
 // baseline, and the command-to-set-point latency through a real pty served
 // by the emulator (p50, p99).
 #include <algorithm>
@@ -97,7 +97,7 @@ void latency(const char* name, int baud) {
 }  // namespace
 
 int main() {
-  // 1. Decoder throughput on 60-byte STATE frames (3 motors).
+  // 1. Decoder throughput on 64-byte STATE frames (3 motors: 6 + 13 + 3 x 15 bytes).
   const std::vector<uint8_t> clean = state_stream(20000);
   std::vector<uint8_t> dirty = clean;
   std::mt19937 rng(5);

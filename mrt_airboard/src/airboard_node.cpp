@@ -152,6 +152,12 @@ class AirboardNode {
 
   // ------------------------------------------------------------ inputs
   void on_cmd_vel(const geometry_msgs::Twist& m) {
+    if (!std::isfinite(m.linear.x) || !std::isfinite(m.linear.y) || !std::isfinite(m.angular.z)) {
+      ++dropped_inputs_;
+      ROS_WARN_THROTTLE(5.0, "airboard_node: dropped a cmd_vel with a non-finite component (%g, %g, %g)",
+                        m.linear.x, m.linear.y, m.angular.z);
+      return;
+    }
     twist_ = Twist2D{m.linear.x, m.linear.y, m.angular.z};
     source_ = Source::kTwist;
     last_cmd_ = ros::Time::now();
@@ -160,7 +166,14 @@ class AirboardNode {
   void on_brian(const mrt_msgs::CommandArray& m) {
     std::vector<std::pair<std::string, double>> c;
     for (const auto& x : m.commands) c.emplace_back(x.name, x.value);
-    twist_ = brian_.to_twist(c);
+    const auto t = brian_.to_twist(c);
+    if (!t) {
+      ++dropped_inputs_;
+      ROS_WARN_THROTTLE(5.0, "airboard_node: dropped a brian_commands array with a non-finite %s, %s or %s",
+                        o_.brian.speed_name.c_str(), o_.brian.angle_name.c_str(), o_.brian.rotation_name.c_str());
+      return;
+    }
+    twist_ = *t;
     source_ = Source::kTwist;
     last_cmd_ = ros::Time::now();
   }
@@ -190,9 +203,10 @@ class AirboardNode {
       ROS_WARN_THROTTLE(5.0, "airboard_node: %s (retrying, next delay %.1f s)", e.what(), backoff_.current_delay());
       return;
     }
-    backoff_.succeeded();
-    if (ever_connected_) ++reconnects_;
-    ever_connected_ = true;
+    // The back-off is reset by the board's first valid frame (on_frame), not
+    // here: a port that opens but stays silent keeps backing off.
+    ++port_opens_;
+    answered_ = false;
     dec_.clear();
     opened_at_ = now;
     last_frame_ = -1.0;
@@ -323,7 +337,9 @@ class AirboardNode {
       return;
     }
     const bool fresh = source_ != Source::kNone && (now_t - last_cmd_).toSec() <= o_.cmd_timeout;
-    const double dt = last_control_ > 0.0 ? now - last_control_ : 1.0 / o_.rate;
+    // While the board reports it stopped, each command is the first step of
+    // the ramp at the nominal period, so repeated ones are identical.
+    const double dt = last_control_ > 0.0 && !limiter_.board_stopped() ? now - last_control_ : 1.0 / o_.rate;
     last_control_ = now;
     if (fresh && source_ == Source::kWheelPwm) {
       std::vector<double> d = wheel_cmd_;
@@ -336,7 +352,15 @@ class AirboardNode {
         ++commands_saturated_;
         ROS_WARN_THROTTLE(5.0, "airboard_node: wheel_cmd duty beyond +-1 clamped");
       }
-      limiter_.reset();
+      // A later twist ramps from the wheels' measured speeds (open loop: no
+      // set-point is in force).
+      if (have_state_ && last_state_.motors.size() == n_) {
+        std::vector<double> measured(n_);
+        for (std::size_t i = 0; i < n_; ++i) measured[i] = last_state_.motors[i].speed;
+        limiter_.hold(measured);
+      } else {
+        limiter_.reset();
+      }
       send(make_set_pwm(seq_++, d));
       ++commands_sent_;
       return;
@@ -384,6 +408,12 @@ class AirboardNode {
     const ros::Time now = ros::Time::now();
     last_frame_ = now.toSec();
     link_up_ = true;
+    if (!answered_) {
+      answered_ = true;
+      backoff_.succeeded();
+      if (ever_answered_) ++reconnects_;
+      ever_answered_ = true;
+    }
     BoardState s;
     ShortState ss;
     BoardCounters c;
@@ -433,6 +463,7 @@ class AirboardNode {
       ++unexpected_frames_;
       return;
     }
+    note_board_status(s.status);
     counters_ = BoardCounters{s.since_cmd_ms, s.frames_bad, s.watchdog_trips};
     have_counters_ = true;
     if (!tracker_.update(s, now.toSec())) {
@@ -443,6 +474,12 @@ class AirboardNode {
     publish_state(s);
   }
 
+  // A state with the WATCHDOG bit: the board zeroed its set-points and
+  // applied none of the commands sent since (the bit is latched until one
+  // is): the acceleration ramp restarts from rest, not from the old target.
+  // The first state without the bit releases it.
+  void note_board_status(uint8_t status) { limiter_.set_board_stopped((status & proto::kStatusWatchdog) != 0); }
+
   // SHORT_STATE: clock and counts unwrapped by the tracker, set-points and
   // status from the board; the measured speed is computed here from the
   // counts (over >= 10 ms), the duty is not carried (NaN), the counters are
@@ -452,6 +489,7 @@ class AirboardNode {
       ++unexpected_frames_;
       return;
     }
+    note_board_status(ss.status);
     if (!tracker_.update_short(ss, now.toSec(), short_max_gap_ms())) return;
     if (tracker_.rebased()) {
       odom_.reset();
@@ -607,6 +645,8 @@ class AirboardNode {
     d.add("unexpected frames", unexpected_frames_);
     d.add("board frames bad", have_state_ ? last_state_.frames_bad : 0);
     d.add("reconnects", reconnects_);
+    d.add("port opens", port_opens_);
+    d.add("next reconnect delay (s)", backoff_.current_delay());
     d.add("commands sent", commands_sent_);
     d.add("commands clamped (speed limit)", commands_saturated_);
     d.add("inputs dropped", dropped_inputs_);
@@ -659,7 +699,9 @@ class AirboardNode {
   double last_control_ = 0.0;
 
   bool link_up_ = false;
-  bool ever_connected_ = false;
+  bool answered_ = false;       // a valid frame arrived since the port was opened
+  bool ever_answered_ = false;
+  uint64_t port_opens_ = 0;
   double opened_at_ = 0.0;
   double last_frame_ = -1.0;
   bool info_ok_ = false;

@@ -33,13 +33,17 @@ void BrianMappingParams::validate() const {
 
 BrianMapping::BrianMapping(BrianMappingParams p) : p_(std::move(p)) { p_.validate(); }
 
-Twist2D BrianMapping::to_twist(const std::vector<std::pair<std::string, double>>& commands) const {
+std::optional<Twist2D> BrianMapping::to_twist(const std::vector<std::pair<std::string, double>>& commands) const {
   double speed = 0.0, angle = 0.0, rot = 0.0;
   for (const auto& [name, value] : commands) {
-    if (!std::isfinite(value)) continue;
-    if (name == p_.speed_name) speed = value * p_.speed_scale;
-    else if (p_.mode == BrianMappingParams::Mode::kPolar && name == p_.angle_name) angle = value * p_.angle_scale;
-    else if (name == p_.rotation_name) rot = value * p_.rotation_scale;
+    double* dst = nullptr;
+    double scale = 0.0;
+    if (name == p_.speed_name) dst = &speed, scale = p_.speed_scale;
+    else if (p_.mode == BrianMappingParams::Mode::kPolar && name == p_.angle_name) dst = &angle, scale = p_.angle_scale;
+    else if (name == p_.rotation_name) dst = &rot, scale = p_.rotation_scale;
+    if (!dst) continue;  // not ours
+    *dst = value * scale;
+    if (!std::isfinite(*dst)) return std::nullopt;  // NaN, inf, or overflow by the scale
   }
   Twist2D t;
   if (p_.mode == BrianMappingParams::Mode::kPolar) {

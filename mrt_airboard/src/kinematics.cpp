@@ -97,7 +97,15 @@ std::unique_ptr<BaseKinematics> make_kinematics(const BaseParams& p) {
 
 VelocityLimiter::VelocityLimiter(const BaseParams& p) : p_(p), kin_(make_kinematics(p)) {}
 
-void VelocityLimiter::reset() { last_.clear(); }
+void VelocityLimiter::reset() {
+  last_.clear();
+  board_stopped_ = false;
+}
+
+void VelocityLimiter::set_board_stopped(bool stopped) {
+  board_stopped_ = stopped;
+  if (stopped) last_.clear();  // the board's set-points are 0
+}
 
 VelocityLimiter::Result VelocityLimiter::update(const Twist2D& requested, double dt) {
   Twist2D t = requested;
@@ -110,7 +118,9 @@ VelocityLimiter::Result VelocityLimiter::update(const Twist2D& requested, double
   r.wheels = kin_->inverse(t);
   r.saturated = saturate_preserving_direction(r.wheels, p_.max_wheel_speed) < 1.0;
 
-  if (last_.size() != r.wheels.size()) last_.assign(r.wheels.size(), 0.0);  // from rest
+  // From rest: at the start, after reset(), and while the board reports it
+  // stopped the motors.
+  if (board_stopped_ || last_.size() != r.wheels.size()) last_.assign(r.wheels.size(), 0.0);
   if (p_.max_wheel_accel > 0.0 && dt > 0.0) {
     std::vector<double> delta(r.wheels.size());
     for (std::size_t i = 0; i < delta.size(); ++i) delta[i] = r.wheels[i] - last_[i];

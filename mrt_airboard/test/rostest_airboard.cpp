@@ -1,5 +1,6 @@
 // rostests of airboard_node against airboard_emulator on a pseudo-terminal.
 // Each .test file starts both and selects one test with --gtest_filter.
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/AirboardStatus.h>
@@ -10,10 +11,17 @@
 #include <ros/ros.h>
 
 #include <algorithm>
+#include <cstring>
+#include <limits>
+#include <cerrno>
 #include <csignal>
 #include <cmath>
+#include <cstdint>
+#include <fcntl.h>
+#include <pty.h>
 #include <string>
 #include <sys/prctl.h>
+#include <termios.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -54,6 +62,36 @@ struct Sample {
   double t;
   Pose2D pose;
   double vx, vy, omega;
+};
+
+// The node's two diagnostic entries ("<node>: AIRBoard link" / "... motors")
+// as they arrive on /diagnostics.
+class DiagRecorder {
+ public:
+  explicit DiagRecorder(ros::NodeHandle& nh) : sub_(nh.subscribe("/diagnostics", 100, &DiagRecorder::on, this)) {}
+  std::vector<diagnostic_msgs::DiagnosticStatus> link, motors;
+  static std::string value(const diagnostic_msgs::DiagnosticStatus& d, const std::string& key) {
+    for (const auto& kv : d.values)
+      if (kv.key == key) return kv.value;
+    ADD_FAILURE() << "no key '" << key << "' in diagnostic entry '" << d.name << "'";
+    return "";
+  }
+  static double number(const diagnostic_msgs::DiagnosticStatus& d, const std::string& key) {
+    const std::string v = value(d, key);
+    return v.empty() ? -1.0 : std::stod(v);
+  }
+
+ private:
+  static bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+  }
+  void on(const diagnostic_msgs::DiagnosticArray& a) {
+    for (const auto& d : a.status) {
+      if (ends_with(d.name, "AIRBoard link")) link.push_back(d);
+      if (ends_with(d.name, "AIRBoard motors")) motors.push_back(d);
+    }
+  }
+  ros::Subscriber sub_;
 };
 
 class Airboard : public ::testing::Test {
@@ -110,6 +148,7 @@ class Airboard : public ::testing::Test {
   EmulatorProcess emu_;
   std::string emu_link_;
   ros::NodeHandle nh_, pnh_{"~"};
+  DiagRecorder diag_{nh_};
   ros::Publisher cmd_pub_;
   ros::Subscriber odom_sub_, status_sub_, wheel_sub_;
   double vx_ = 0, vy_ = 0, omega_ = 0;
@@ -238,11 +277,25 @@ TEST_F(Airboard, WatchdogStopsTheWheels) {
               status_[trip].since_command, cruise, first_still);
   EXPECT_GT(checked, 10u);
   EXPECT_GT(stopped, 5u);
+  // Diagnostics (1 Hz): the motors entry warns of the trip, the link stays up.
+  EXPECT_TRUE(wait_for([&] {
+    return !diag_.motors.empty() && diag_.motors.back().level == diagnostic_msgs::DiagnosticStatus::WARN &&
+           diag_.motors.back().message.find("watchdog tripped") != std::string::npos;
+  }, 3.0)) << "the motors diagnostic never reported the watchdog trip";
+  ASSERT_FALSE(diag_.motors.empty());
+  EXPECT_GE(DiagRecorder::number(diag_.motors.back(), "watchdog trips"), 1.0);
+  ASSERT_FALSE(diag_.link.empty());
+  EXPECT_EQ(diag_.link.back().level, diagnostic_msgs::DiagnosticStatus::OK) << diag_.link.back().message;
 }
 
 // 10 % of the PC -> board bytes (and 1 % of the replies, corruption.test, or
-// 10 % as well, corruption_both.test) get a bit flipped: the link survives and only the commanded set-points (or 0 after a watchdog
-// trip) ever reach a motor.
+// 10 % as well, corruption_both.test) get a bit flipped: the link survives and
+// only set-points on the acceleration ramp from 0 to the commanded ones (or 0
+// after a watchdog trip) ever reach a motor. Set-points cross the wire as
+// integer mrad/s, so they are compared in that quantum: the target exactly,
+// a ramp point as lambda * target with lambda in (0, 1] to one quantum per
+// wheel (the node rounds each wheel to 0.5 mrad/s; lambda comes from the
+// fastest wheel).
 TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
   status_.clear();
   wheels_.clear();
@@ -252,24 +305,45 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
   pnh_.getParam("expected_setpoints", want);
   ASSERT_FALSE(want.empty());
   ASSERT_FALSE(wheels_.empty());
-  // Skip the acceleration ramp: start at the first state showing the target.
-  auto is_target = [&](const mrt_msgs::WheelState& w) {
-    for (std::size_t i = 0; i < want.size(); ++i)
-      if (std::fabs(w.setpoint[i] - want[i]) > 1.5e-3) return false;
-    return true;
-  };
-  std::size_t start = 0;
-  while (start < wheels_.size() && !is_target(wheels_[start])) ++start;
-  ASSERT_LT(start, wheels_.size()) << "the commanded set-points never reached the board";
-  std::size_t on_target = 0, zero = 0;
-  for (std::size_t k = start; k < wheels_.size(); ++k) {
-    const auto& w = wheels_[k];
+  std::vector<long long> W;
+  for (double w : want) W.push_back(std::llround(w * 1000.0));
+  std::size_t j = 0;  // fastest wheel
+  for (std::size_t i = 1; i < W.size(); ++i)
+    if (std::llabs(W[i]) > std::llabs(W[j])) j = i;
+  ASSERT_NE(W[j], 0);
+  std::size_t on_target = 0, on_ramp = 0, zero = 0, decreases = 0;
+  std::size_t restarts = 0, restarts_at_target = 0;  // first non-zero state after a stop
+  long long prev = 0;  // |set-point| of the fastest wheel in the previous state, quanta
+  for (const auto& w : wheels_) {
     ASSERT_EQ(w.setpoint.size(), want.size());
-    bool all_zero = true;
-    for (double s : w.setpoint) all_zero = all_zero && s == 0.0;
-    if (is_target(w)) ++on_target;
-    else if (all_zero) ++zero;
-    else ADD_FAILURE() << "bogus set-point reached the board: " << w.setpoint[0] << ", " << w.setpoint[1];
+    std::vector<long long> q;
+    for (double s : w.setpoint) q.push_back(std::llround(s * 1000.0));
+    bool all_zero = true, exact = true;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      all_zero = all_zero && q[i] == 0;
+      exact = exact && q[i] == W[i];
+    }
+    if (all_zero) {
+      ++zero;  // stopped (by the watchdog, or before the first command): a new ramp starts
+      prev = 0;
+      continue;
+    }
+    // lambda = q_j / W_j in (0, 1]: same direction, never beyond the target.
+    bool ok = (q[j] > 0) == (W[j] > 0) && q[j] != 0 && std::llabs(q[j]) <= std::llabs(W[j]);
+    // Every wheel at lambda * W_i, to one quantum: |q_i W_j - W_i q_j| <= |W_j|.
+    for (std::size_t i = 0; i < q.size(); ++i) ok = ok && std::llabs(q[i] * W[j] - W[i] * q[j]) <= std::llabs(W[j]);
+    if (!ok) {
+      ADD_FAILURE() << "bogus set-point reached the board: " << w.setpoint[0] << ", " << w.setpoint[1];
+      continue;
+    }
+    if (exact) ++on_target;
+    else ++on_ramp;
+    if (prev == 0) {
+      ++restarts;
+      if (exact) ++restarts_at_target;
+    }
+    if (std::llabs(q[j]) < prev) ++decreases;
+    prev = std::llabs(q[j]);
   }
   // The link survived: connected all along, no reconnection, frames flowing.
   bool all_connected = true;
@@ -282,11 +356,23 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
   EXPECT_GT(last.frames_good, 200u);
   ASSERT_FALSE(odom_.empty());
   const double dist = std::hypot(odom_.back().pose.x - odom_.front().pose.x, odom_.back().pose.y - odom_.front().pose.y);
-  std::printf("corruption: %zu states on target, %zu stopped by the watchdog, board discarded %u frames, node "
-              "accepted %lu and discarded %lu, %u watchdog trips, travelled %.2f m\n",
-              on_target, zero, last.board_frames_bad, static_cast<unsigned long>(last.frames_good),
+  std::printf("corruption: %zu states on target, %zu on the ramp (%zu decreases), %zu stopped, %zu restarts (%zu "
+              "straight at the target), board discarded %u frames, node accepted %lu and discarded %lu, %u watchdog "
+              "trips, travelled %.2f m\n",
+              on_target, on_ramp, decreases, zero, restarts, restarts_at_target, last.board_frames_bad,
+              static_cast<unsigned long>(last.frames_good),
               static_cast<unsigned long>(last.frames_bad), last.watchdog_trips, dist);
   EXPECT_GT(on_target, zero);
+  // After a watchdog trip the ramp restarts from 0: the board's first
+  // set-point is a ramp step, unless the command it applies was already on its
+  // way when it tripped (measured: 1 restart in 6-10). Stepping from 0
+  // straight to the target after every trip (the limiter keeping the old
+  // target) gives 10 of 10.
+  EXPECT_GE(restarts, 2u) << "too few watchdog trips to judge the ramp restart";
+  EXPECT_LE(2 * restarts_at_target, restarts) << "the acceleration ramp was bypassed after watchdog trips";
+  // The ramp only goes up, except when a command sent before the node learnt
+  // of a trip reaches the board after it: at most once per trip.
+  EXPECT_LE(decreases, last.watchdog_trips);
   EXPECT_GT(dist, 0.3);
 }
 
@@ -324,6 +410,22 @@ TEST_F(Airboard, BrianAndWheelCommandsReachTheBoard) {
     ros::WallDuration(0.01).sleep();
     return last_setpoints_near(w.speed);
   }, 10.0)) << "wheel_cmd set-points did not reach the board";
+  // Non-finite inputs are dropped and counted, not zeroed: the wheel_cmd
+  // set-points stay in force (the node's cmd_timeout, 0.5 s, is not reached).
+  geometry_msgs::Twist bad;
+  bad.linear.x = std::nan("");
+  mrt_msgs::CommandArray bad_brian = c;
+  bad_brian.commands[0].value = std::numeric_limits<double>::infinity();
+  double dropped = -1;
+  EXPECT_TRUE(wait_for([&] {
+    wheel.publish(w);
+    cmd_pub_.publish(bad);
+    brian.publish(bad_brian);
+    ros::WallDuration(0.02).sleep();
+    if (!diag_.link.empty()) dropped = DiagRecorder::number(diag_.link.back(), "inputs dropped");
+    return dropped >= 2.0;
+  }, 5.0)) << "non-finite cmd_vel / brian_commands were not counted";
+  EXPECT_TRUE(last_setpoints_near(w.speed)) << "a non-finite input changed the set-points";
 }
 
 // The board disappears (the emulator process exits: the pty hangs up) and
@@ -343,20 +445,97 @@ TEST_F(Airboard, ReconnectsWhenThePortComesBack) {
     stopped = stopped || zero;
   }
   EXPECT_TRUE(stopped) << "no stopped wheel_state after the link was lost";
+  // Diagnostics (1 Hz): the link entry turns ERROR and keeps the counts of
+  // the frames received before the loss; the motors are reported stale.
+  diag_.link.clear();
+  diag_.motors.clear();
+  ASSERT_TRUE(wait_for([&] { return !diag_.link.empty() && !diag_.motors.empty(); }, 3.0)) << "no diagnostics";
+  EXPECT_EQ(diag_.link.back().level, diagnostic_msgs::DiagnosticStatus::ERROR);
+  EXPECT_EQ(diag_.link.back().message, "no link to the board");
+  EXPECT_GT(DiagRecorder::number(diag_.link.back(), "frames good"), 50.0) << "1 s of 10 ms STATEs before the loss";
+  EXPECT_EQ(DiagRecorder::number(diag_.link.back(), "frames bad (CRC)"), 0.0) << "a clean line";
+  EXPECT_EQ(DiagRecorder::number(diag_.link.back(), "reconnects"), 0.0);
+  EXPECT_EQ(diag_.motors.back().level, diagnostic_msgs::DiagnosticStatus::STALE);
   drive(1.0, vx_, vy_, omega_);  // commands while the board is away
   status_.clear();
   emu_.start(emu_link_);
   ASSERT_TRUE(wait_for([&] { return !status_.empty() && status_.back().connected && status_.back().board_time > 0; },
                        15.0))
       << "the node did not reconnect";
-  EXPECT_GE(status_.back().reconnects, 1u);
+  EXPECT_EQ(status_.back().reconnects, 1u);
   EXPECT_LT(status_.back().board_time, 5.0);  // a fresh board
+  diag_.link.clear();
+  EXPECT_TRUE(wait_for([&] {
+    return !diag_.link.empty() && diag_.link.back().level == diagnostic_msgs::DiagnosticStatus::OK;
+  }, 3.0)) << "the link diagnostic did not recover";
+  if (!diag_.link.empty()) {
+    EXPECT_EQ(DiagRecorder::number(diag_.link.back(), "reconnects"), 1.0);
+    EXPECT_GE(DiagRecorder::number(diag_.link.back(), "port opens"), 2.0);
+    // The board answered: the back-off is back at ~reconnect_min (0.1 s).
+    EXPECT_DOUBLE_EQ(DiagRecorder::number(diag_.link.back(), "next reconnect delay (s)"), 0.1);
+  }
   wheels_.clear();
   drive(1.0, vx_, vy_, omega_);
   bool moving = false;
   for (const auto& w : wheels_)
     for (double v : w.speed) moving = moving || std::fabs(v) > 1.0;
   EXPECT_TRUE(moving) << "the wheels did not move after reconnection";
+}
+
+// A port that opens but on which nobody answers (a pty the test holds and
+// drains, silent.test: ~link_timeout 0.2 s, ~reconnect_min 0.1 s,
+// ~reconnect_max 0.8 s): every opening ends in a link timeout, so the delay
+// doubles 0.1, 0.2, 0.4, 0.8 s and stays at 0.8 s; it is reset only by a
+// valid frame. Each cycle lasts link_timeout + delay: 0.3, 0.4, 0.6, 1.0,
+// 1.0 ... s, so over 6 s at most 8 openings (a reset at every opening would
+// give a 0.3 s cycle: 20).
+TEST(SilentPort, ReconnectionBacksOff) {
+  ros::NodeHandle nh, pnh("~");
+  std::string link;
+  ASSERT_TRUE(pnh.getParam("silent_port", link));
+  int master = -1, slave = -1;
+  ASSERT_EQ(::openpty(&master, &slave, nullptr, nullptr, nullptr), 0) << std::strerror(errno);
+  termios tio{};
+  ::tcgetattr(slave, &tio);
+  ::cfmakeraw(&tio);
+  ::tcsetattr(slave, TCSANOW, &tio);
+  ::fcntl(master, F_SETFL, ::fcntl(master, F_GETFL) | O_NONBLOCK);
+  ::unlink(link.c_str());
+  ASSERT_EQ(::symlink(::ptsname(master), link.c_str()), 0) << std::strerror(errno);
+  DiagRecorder diag(nh);
+  auto run = [&](double seconds, auto pred) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    uint8_t buf[512];
+    while (ros::ok() && ros::WallTime::now() < end && !pred()) {
+      while (::read(master, buf, sizeof(buf)) > 0) {
+      }  // swallow whatever the node sends
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+  };
+  run(10.0, [&] { return !diag.link.empty() && DiagRecorder::number(diag.link.back(), "port opens") >= 1.0; });
+  ASSERT_FALSE(diag.link.empty()) << "no diagnostics from the node";
+  const double opens0 = DiagRecorder::number(diag.link.back(), "port opens");
+  ASSERT_GE(opens0, 1.0) << "the node never opened the pty";
+  const std::size_t first = diag.link.size() - 1;
+  run(6.0, [] { return false; });
+  ::unlink(link.c_str());
+  ::close(slave);
+  ::close(master);
+  ASSERT_GT(diag.link.size(), first + 3);
+  double prev = 0.0;
+  for (std::size_t i = first; i < diag.link.size(); ++i) {
+    const auto& d = diag.link[i];
+    EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::ERROR) << "the silent board was reported up";
+    const double delay = DiagRecorder::number(d, "next reconnect delay (s)");
+    EXPECT_GE(delay, prev) << "the back-off was reset without an answer";
+    prev = delay;
+  }
+  const double opens = DiagRecorder::number(diag.link.back(), "port opens") - opens0;
+  std::printf("silent: %.0f openings in ~6 s, next delay %.2f s\n", opens, prev);
+  EXPECT_DOUBLE_EQ(prev, 0.8);
+  EXPECT_GE(opens, 3.0);
+  EXPECT_LE(opens, 8.0);
 }
 
 }  // namespace

@@ -134,3 +134,38 @@ TEST(VelocityLimiter, DeadbandSaturationAndAcceleration) {
   r = diff.update({0.0, 1.0, 0.0}, 0.02);
   expect_wheels(r.wheels, {0.0, 0.0});
 }
+
+// After a watchdog trip the board's set-points are 0: the ramp restarts from
+// rest instead of stepping from the old target (triskar, 100 rad/s^2, 20 ms:
+// one step is 2 rad/s on the fastest wheel; 1 m/s forward is
+// (-25, 12.5, 12.5) rad/s, so the first step is (-2, 1, 1)).
+TEST(VelocityLimiter, RestartsTheRampWhenTheBoardStopped) {
+  BaseParams p = base_preset("triskar");
+  p.max_wheel_accel = 100.0;
+  VelocityLimiter lim(p);
+  VelocityLimiter::Result r;
+  for (int i = 0; i < 20; ++i) r = lim.update({1.0, 0.0, 0.0}, 0.02);
+  expect_wheels(r.wheels, {-25.0, 12.5, 12.5});
+  EXPECT_FALSE(lim.board_stopped());
+  lim.set_board_stopped(true);
+  EXPECT_TRUE(lim.board_stopped());
+  // While the board reports it stopped, every command is the first step:
+  // whichever of them the board applies first is one step from 0.
+  for (int i = 0; i < 3; ++i) {
+    r = lim.update({1.0, 0.0, 0.0}, 0.02);
+    EXPECT_TRUE(r.accel_limited);
+    expect_wheels(r.wheels, {-2.0, 1.0, 1.0});
+  }
+  // A state without the bit: the ramp goes on from the applied step.
+  lim.set_board_stopped(false);
+  r = lim.update({1.0, 0.0, 0.0}, 0.02);
+  expect_wheels(r.wheels, {-4.0, 2.0, 2.0});
+  r = lim.update({1.0, 0.0, 0.0}, 0.02);
+  expect_wheels(r.wheels, {-6.0, 3.0, 3.0});
+  // reset() (link lost) also ramps from rest and clears the flag.
+  lim.set_board_stopped(true);
+  lim.reset();
+  EXPECT_FALSE(lim.board_stopped());
+  r = lim.update({-1.0, 0.0, 0.0}, 0.01);
+  expect_wheels(r.wheels, {1.0, -0.5, -0.5});
+}

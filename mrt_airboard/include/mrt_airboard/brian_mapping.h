@@ -2,6 +2,7 @@
 // ROS-free.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,7 +20,8 @@ namespace mrt::airboard {
 ///    `rotation` the turn rate ("jog").
 /// Each value is multiplied by its scale to reach SI units (defaults: cm/s ->
 /// m/s, degrees -> rad, deg/s -> rad/s). Commands absent from an array count
-/// as 0; unknown names are ignored.
+/// as 0; unknown names are ignored; a non-finite value of a mapped command
+/// invalidates the whole array (BrianMapping::to_twist returns nothing).
 struct BrianMappingParams {
   enum class Mode { kPolar, kUnicycle } mode = Mode::kUnicycle;
   std::string speed_name = "Speed";
@@ -40,8 +42,10 @@ struct BrianMappingParams {
 class BrianMapping {
  public:
   explicit BrianMapping(BrianMappingParams p);
-  /// Twist from one cycle's (name, value) commands.
-  Twist2D to_twist(const std::vector<std::pair<std::string, double>>& commands) const;
+  /// Twist from one cycle's (name, value) commands; std::nullopt when a
+  /// mapped command (speed, angle in polar mode, rotation) is NaN or
+  /// infinite, so that the caller drops and counts the array.
+  std::optional<Twist2D> to_twist(const std::vector<std::pair<std::string, double>>& commands) const;
   const BrianMappingParams& params() const { return p_; }
 
  private:

@@ -123,21 +123,33 @@ class VelocityLimiter {
     bool accel_limited = false;  // the acceleration limit scaled the change
   };
 
-  /// `dt` is the time since the previous call (s); ignored for the first
-  /// call and when the acceleration limit is 0.
+  /// `dt` is the time since the previous call (s); ignored when the
+  /// acceleration limit is 0. The first call (or the first after reset())
+  /// ramps from rest: its step is at most max_wheel_accel * dt. A
+  /// non-finite request is treated as a stop (callers drop such input
+  /// before; this only keeps NaN off the wire).
   Result update(const Twist2D& requested, double dt);
   /// Forgets the previous set-points (e.g. after the link was lost: the
-  /// motors are considered stopped).
+  /// motors are considered stopped) and clears set_board_stopped().
   void reset();
   /// Sets the previous set-points (after wheel speeds were commanded
   /// directly), so the next ramp starts from them.
   void hold(const std::vector<double>& wheels) { last_ = wheels; }
+  /// The board reports (status bit WATCHDOG) that it zeroed its set-points
+  /// on its own. While `stopped` is true every update() ramps from rest: the
+  /// board applied none of the commands sent since, so whichever it applies
+  /// first is a single step from 0. Once a state without the bit arrives (a
+  /// command was applied), call it with false: the ramp goes on from the
+  /// last set-points returned.
+  void set_board_stopped(bool stopped);
+  bool board_stopped() const { return board_stopped_; }
   const BaseKinematics& kinematics() const { return *kin_; }
 
  private:
   BaseParams p_;
   std::unique_ptr<BaseKinematics> kin_;
   std::vector<double> last_;
+  bool board_stopped_ = false;
 };
 
 }  // namespace mrt::airboard
