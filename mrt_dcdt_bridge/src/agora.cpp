@@ -280,6 +280,7 @@ AgoraStats Agora::Stats() {
   s.routed = routed_;
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
+  s.mailbox_dropped = post_office_->MailboxDrops();
   if (inner_) {
     s.peer_ids = inner_->PeerIds();
     s.inner_peers = static_cast<int>(s.peer_ids.size());

@@ -35,7 +35,11 @@ struct AgoraOptions {
 };
 
 struct AgoraStats {
-  uint64_t routed = 0, duplicates = 0, hop_limited = 0, inner_errors = 0;
+  uint64_t routed = 0;
+  uint64_t duplicates = 0;       ///< copies recognised by origin (agora id, incarnation, seq) and dropped
+  uint64_t hop_limited = 0;      ///< dropped after more than kMaxHops channels
+  uint64_t inner_errors = 0;     ///< malformed or undeliverable inner-link datagrams
+  uint64_t mailbox_dropped = 0;  ///< discarded because a Member's mailbox was full
   int inner_peers = 0;
   int finder_peers = 0;
   std::vector<int> peer_ids;  ///< Agoras seen: inner-link peers, Finder peers, channel peers (sorted, unique)
