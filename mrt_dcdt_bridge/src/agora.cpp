@@ -21,6 +21,13 @@ int RandomAgoraId() {
   return v == 0 ? 1 : static_cast<int>(v);
 }
 
+uint64_t RandomIncarnation() {
+  std::random_device rd;
+  uint64_t v = (static_cast<uint64_t>(rd()) << 32) ^ rd() ^
+               static_cast<uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+  return v == 0 ? 1 : v;
+}
+
 AgoraOptions NetworkOptions(const std::string& file) {
   AgoraOptions o;
   o.network = true;
@@ -41,7 +48,9 @@ std::string DefaultInnerDir() {
 
 void Agora::Setup() {
   agora_id_ = options_.agora_id > 0 ? options_.agora_id : RandomAgoraId();
+  incarnation_ = RandomIncarnation();
   options_.channel.agora_id = agora_id_;
+  options_.channel.incarnation = incarnation_;
   post_office_ = PostOffice::Create(options_.config.policy);
   post_office_->agora_id = agora_id_;
   if (options_.inner_links) {
@@ -195,8 +204,8 @@ void Agora::NotifyStateChange() {
   members_cv_.notify_all();
 }
 
-bool Agora::SeenBefore(int32_t agora, uint64_t seq) {
-  const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(agora)) << 32) | (seq & 0xffffffffu);
+bool Agora::SeenBefore(const MsgHeader& h) {
+  const Origin key{h.agora_id, h.incarnation, h.seq};
   std::lock_guard<std::mutex> l(seen_mutex_);
   if (!seen_.insert(key).second) return true;
   seen_order_.push_back(key);
@@ -210,7 +219,7 @@ bool Agora::SeenBefore(int32_t agora, uint64_t seq) {
 void Agora::Route(std::shared_ptr<Msg> msg, const Source& src) {
   auto& h = msg->mutable_header();
   if (src.kind != Source::MEMBER) {
-    if (h.agora_id == agora_id_ || SeenBefore(h.agora_id, h.seq)) {
+    if (h.agora_id == agora_id_ || SeenBefore(h)) {
       ++duplicates_;  // our own message came back, or a copy by another path
       return;
     }
@@ -271,6 +280,7 @@ AgoraStats Agora::Stats() {
   s.routed = routed_;
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
+  s.mailbox_dropped = post_office_->MailboxDrops();
   if (inner_) {
     s.peer_ids = inner_->PeerIds();
     s.inner_peers = static_cast<int>(s.peer_ids.size());

@@ -15,11 +15,12 @@ void BridgeMember::DoYourJob(int) {
     for (const auto& m : mapping_.to_ros)
       if (m.type == msg->ReadType()) map = &m;
     if (!map) {
-      CountError("unmapped type " + std::to_string(msg->ReadType()), false);
+      CountError("unmapped type " + std::to_string(msg->ReadType()), BridgeError::DROPPED);
       continue;
     }
+    bool delivered = false;
     if (map->kind == PayloadKind::RAW) {
-      deliver_(*map, *msg, nullptr);
+      delivered = deliver_(*map, *msg, nullptr);
     } else {
       XmlMessage xml;
       try {
@@ -27,11 +28,12 @@ void BridgeMember::DoYourJob(int) {
       } catch (const XmlError& e) {
         CountError("type " + std::to_string(msg->ReadType()) + " from agora " + std::to_string(msg->ReadAgoraID()) +
                        ": " + e.what(),
-                   true);
+                   BridgeError::PARSE);
         continue;
       }
-      deliver_(*map, *msg, &xml);
+      delivered = deliver_(*map, *msg, &xml);
     }
+    if (!delivered) continue;
     std::lock_guard<std::mutex> l(mutex_);
     ++stats_.in[msg->ReadType()];
   }
@@ -40,7 +42,8 @@ void BridgeMember::DoYourJob(int) {
 
 void BridgeMember::Share(const TopicMapping& m, const std::string& payload) {
   if (payload.size() > kMaxPayload) {
-    CountError("payload of " + m.topic + " larger than " + std::to_string(kMaxPayload) + " bytes", false);
+    CountError("payload of " + m.topic + " larger than " + std::to_string(kMaxPayload) + " bytes",
+               BridgeError::DROPPED);
     return;
   }
   Msg* msg = CreateMsg(m.type, m.warranty);
@@ -50,10 +53,13 @@ void BridgeMember::Share(const TopicMapping& m, const std::string& payload) {
   ++stats_.out[m.type];
 }
 
-void BridgeMember::CountError(const std::string& what, bool parse_error) {
+void BridgeMember::CountError(const std::string& what, BridgeError kind) {
   std::lock_guard<std::mutex> l(mutex_);
-  if (parse_error) ++stats_.parse_errors;
-  else ++stats_.dropped;
+  switch (kind) {
+    case BridgeError::PARSE: ++stats_.parse_errors; break;
+    case BridgeError::CONVERSION: ++stats_.conversion_errors; break;
+    case BridgeError::DROPPED: ++stats_.dropped; break;
+  }
   stats_.last_error = what;
 }
 

@@ -10,6 +10,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <mutex>
@@ -27,6 +28,7 @@ using Clock = std::chrono::steady_clock;
 constexpr int kGiveUp = -2;
 constexpr size_t kMaxOutQueue = 200000;
 constexpr size_t kMaxUdpFrame = 60000;
+constexpr size_t kLossyWindow = 64;  // guaranteed messages in flight on a serial line
 
 // Appends to a link's outbound queue, dropping (and counting) the oldest
 // message when it is full. Returns whether the queue was empty, i.e. whether
@@ -42,7 +44,7 @@ bool PushBounded(std::deque<MsgPtr>& q, const MsgPtr& m, std::atomic<uint64_t>& 
 }
 
 struct Counters {
-  std::atomic<uint64_t> sent{0}, received{0}, resent{0}, dropped{0}, errors{0}, reconnects{0};
+  std::atomic<uint64_t> sent{0}, received{0}, resent{0}, dropped{0}, errors{0}, reconnects{0}, gaps{0};
   std::atomic<bool> connected{false};
   std::atomic<int> peer_agora{0};
   void Fill(ChannelStats* s) const {
@@ -52,19 +54,30 @@ struct Counters {
     s->dropped += dropped;
     s->errors += errors;
     s->reconnects += reconnects;
+    s->gaps += gaps;
     s->connected = s->connected || connected;
     if (peer_agora) s->peer_agora = peer_agora;
   }
 };
 
 // ---------------------------------------------------------------- StreamLink
+// Guaranteed messages on a stream carry a link sequence 1, 2, 3 ... per
+// (our incarnation, peer incarnation) pair; the receiver accepts only the
+// next one (a frame lost to a CRC error leaves a gap: later frames are
+// discarded and a NACK asks for everything after the last good one) and
+// acknowledges cumulatively. Other warranties carry link sequence 0 and are
+// accepted as they come. The HELLO handshake: each side announces its
+// (agora id, incarnation), the incarnation it knows of the peer and what it
+// received from it; MSG frames are sent only once the peer's HELLO names our
+// incarnation. A new peer incarnation (a restart, even with the same id)
+// resets what we received from it and renumbers what we still owe it.
 class StreamLink {
  public:
   /// Returns a connected fd, -1 to retry later, kGiveUp to end for good.
   using ConnectFn = std::function<int(const std::atomic<bool>& stop)>;
 
-  StreamLink(ChannelOptions o, ConnectFn connect, Channel* owner, Channel::ReceiveFn rx, bool all_warranties)
-      : o_(o), connect_(std::move(connect)), owner_(owner), rx_(std::move(rx)), all_(all_warranties) {}
+  StreamLink(ChannelOptions o, ConnectFn connect, Channel* owner, Channel::ReceiveFn rx, bool lossy)
+      : o_(o), connect_(std::move(connect)), owner_(owner), rx_(std::move(rx)), lossy_(lossy) {}
   ~StreamLink() { Stop(); }
 
   void Start() { thread_ = std::thread([this] { Loop(); }); }
@@ -90,6 +103,12 @@ class StreamLink {
   Counters c;
 
  private:
+  struct Unacked {
+    uint64_t seq;
+    MsgPtr msg;
+    std::vector<uint8_t> bytes;
+  };
+
   void Loop() {
     while (!stop_) {
       int fd = connect_(stop_);
@@ -113,22 +132,77 @@ class StreamLink {
     waker_.Drain();
   }
 
+  std::vector<uint8_t> MyHello(bool reply) const {
+    return EncodeHello(Hello{o_.agora_id, o_.incarnation, peer_inc_, last_rx_, reply});
+  }
+
+  // Removes what the peer acknowledged (cumulative). Caller holds mu_.
+  void AckUpTo(uint64_t s) {
+    bool progress = false;
+    while (!unacked_.empty() && unacked_.front().seq <= s) {
+      unacked_.pop_front();
+      progress = true;
+    }
+    if (progress) front_since_ = Clock::now();
+  }
+  // Appends every unacknowledged frame (go-back-N). Caller holds mu_.
+  void ResendAll(std::vector<uint8_t>& wbuf) {
+    for (auto& u : unacked_) {
+      wbuf.insert(wbuf.end(), u.bytes.begin(), u.bytes.end());
+      ++c.resent;
+    }
+    front_since_ = Clock::now();
+  }
+
+  void OnHello(const Hello& h, bool* ready, std::vector<uint8_t>& wbuf) {
+    std::lock_guard<std::mutex> l(mu_);
+    if (h.agora_id != c.peer_agora || h.incarnation != peer_inc_) {
+      // A new peer process (even with the same agora id): its link seqs
+      // restart, and what we still owe it is renumbered from 1.
+      c.peer_agora = h.agora_id;
+      peer_inc_ = h.incarnation;
+      last_rx_ = 0;
+      uint64_t seq = 0;
+      for (auto& u : unacked_) {
+        u.seq = ++seq;
+        u.bytes = EncodeMsg(*u.msg, u.seq);
+      }
+      next_seq_ = seq + 1;
+      *ready = false;
+    }
+    const bool was_ready = *ready;
+    if (h.peer_incarnation == o_.incarnation) *ready = true;  // it knows this run of us
+    if (h.reply) {
+      auto hb = MyHello(!*ready);
+      wbuf.insert(wbuf.end(), hb.begin(), hb.end());
+    }
+    if (!*ready) return;
+    AckUpTo(h.last_rx);
+    if (!was_ready) ResendAll(wbuf);  // a new session: whatever it has not acknowledged
+  }
+
   void Session(int fd) {
     FrameDecoder dec;
-    bool peer_hello = false;
+    bool peer_ready = false;
     auto last_hello = Clock::now() - std::chrono::seconds(10);
+    auto nack_at = Clock::now() - std::chrono::seconds(10);
+    uint64_t nack_for = ~0ull;
     std::vector<uint8_t> rbuf(65536), wbuf;
     while (!stop_) {
-      if (!peer_hello && Clock::now() - last_hello > std::chrono::milliseconds(300)) {
-        auto h = EncodeHello(Hello{o_.agora_id, last_rx_});
-        if (!net::WriteAll(fd, h.data(), h.size())) return;
-        last_hello = Clock::now();
+      const auto now = Clock::now();
+      wbuf.clear();
+      if (!peer_ready && now - last_hello > std::chrono::milliseconds(300)) {
+        std::lock_guard<std::mutex> l(mu_);
+        auto h = MyHello(true);
+        wbuf.insert(wbuf.end(), h.begin(), h.end());
+        last_hello = now;
       }
+      if (!wbuf.empty() && !net::WriteAll(fd, wbuf.data(), wbuf.size())) return;
+      wbuf.clear();
       pollfd p[2] = {{fd, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
       if (::poll(p, 2, 50) < 0 && errno != EINTR) return;
       if (p[1].revents) waker_.Drain();
       bool send_ack = false;
-      wbuf.clear();
       if (p[0].revents & (POLLIN | POLLHUP | POLLERR)) {
         ssize_t r = ::read(fd, rbuf.data(), rbuf.size());
         if (r <= 0) {
@@ -139,21 +213,11 @@ class StreamLink {
         while (auto f = dec.Next()) {
           if (f->kind == FrameKind::HELLO) {
             Hello h;
-            if (!DecodeHelloBody(f->body, &h)) continue;
-            if (h.agora_id != c.peer_agora) last_rx_ = 0;  // a new peer process: its link seqs restart
-            c.peer_agora = h.agora_id;
-            if (!peer_hello) {
-              // The peer may have missed our HELLO (serial): answer once more.
-              auto hb = EncodeHello(Hello{o_.agora_id, last_rx_});
-              wbuf.insert(wbuf.end(), hb.begin(), hb.end());
+            if (!DecodeHelloBody(f->body, &h)) {
+              ++c.errors;
+              continue;
             }
-            peer_hello = true;
-            std::lock_guard<std::mutex> l(mu_);
-            while (!unacked_.empty() && unacked_.front().first <= h.last_rx) unacked_.pop_front();
-            for (auto& [seq, bytes] : unacked_) {
-              wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
-              ++c.resent;
-            }
+            OnHello(h, &peer_ready, wbuf);
           } else if (f->kind == FrameKind::MSG) {
             MsgFrame mf;
             if (!DecodeMsgBody(f->body, &mf)) {
@@ -162,16 +226,33 @@ class StreamLink {
             }
             if (mf.link_seq != 0) {
               send_ack = true;
-              if (mf.link_seq <= last_rx_) continue;  // already delivered before a reconnection
+              if (mf.link_seq <= last_rx_) continue;  // already delivered (a resend)
+              if (mf.link_seq != last_rx_ + 1) {
+                // A gap: an earlier frame was lost. Do not deliver out of
+                // order nor acknowledge past the gap; ask for a resend.
+                ++c.gaps;
+                if (nack_for != last_rx_ || Clock::now() - nack_at > std::chrono::milliseconds(100)) {
+                  auto n = EncodeNack(last_rx_);
+                  wbuf.insert(wbuf.end(), n.begin(), n.end());
+                  nack_for = last_rx_;
+                  nack_at = Clock::now();
+                }
+                continue;
+              }
               last_rx_ = mf.link_seq;
             }
             ++c.received;
             rx_(std::make_shared<Msg>(std::move(mf.msg)), owner_);
-          } else if (f->kind == FrameKind::ACK) {
+          } else if (f->kind == FrameKind::ACK || f->kind == FrameKind::NACK) {
             uint64_t s;
-            if (!DecodeAckBody(f->body, &s)) continue;
+            if (!DecodeAckBody(f->body, &s)) {
+              ++c.errors;
+              continue;
+            }
+            if (!peer_ready) continue;  // it refers to a run of us the peer has not confirmed
             std::lock_guard<std::mutex> l(mu_);
-            while (!unacked_.empty() && unacked_.front().first <= s) unacked_.pop_front();
+            AckUpTo(s);
+            if (f->kind == FrameKind::NACK) ResendAll(wbuf);  // go back N
           }
         }
         c.errors += dec.errors() - counted_errors_;
@@ -181,24 +262,33 @@ class StreamLink {
         auto a = EncodeAck(last_rx_);
         wbuf.insert(wbuf.end(), a.begin(), a.end());
       }
-      if (peer_hello) {
+      if (peer_ready) {
         std::lock_guard<std::mutex> l(mu_);
-        while (!outq_.empty() && wbuf.size() < (4u << 20)) {
+        // A lossy line can also lose the last frame or an ACK/NACK: resend
+        // what stays unacknowledged for too long.
+        if (lossy_ && !unacked_.empty() &&
+            Clock::now() - front_since_ > std::chrono::milliseconds(o_.stream_resend_ms))
+          ResendAll(wbuf);
+        // At most `window` guaranteed messages in flight; the rest wait in
+        // the (bounded) queue, so the link sequence never has holes. On a
+        // lossy line a small window bounds what one go-back resends.
+        const size_t window = lossy_ ? std::min<size_t>(o_.max_unacked, kLossyWindow) : o_.max_unacked;
+        while (!outq_.empty() && wbuf.size() < (4u << 20) && unacked_.size() < window) {
           MsgPtr m = std::move(outq_.front());
           outq_.pop_front();
-          const uint64_t seq = next_seq_++;
-          auto bytes = EncodeMsg(*m, seq);
-          wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
-          ++c.sent;
           if (m->ReadDeliveryWarranty() == DCDT_DW_GUARANTEED) {
-            if (unacked_.size() >= o_.max_unacked) {
-              unacked_.pop_front();
-              ++c.dropped;
-            }
-            unacked_.emplace_back(seq, std::move(bytes));
+            const uint64_t seq = next_seq_++;
+            auto bytes = EncodeMsg(*m, seq);
+            wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
+            if (unacked_.empty()) front_since_ = Clock::now();
+            unacked_.push_back(Unacked{seq, std::move(m), std::move(bytes)});
+          } else {
+            auto bytes = EncodeMsg(*m, 0);
+            wbuf.insert(wbuf.end(), bytes.begin(), bytes.end());
           }
+          ++c.sent;
         }
-        if (!outq_.empty()) waker_.Wake();
+        if (!outq_.empty() && unacked_.size() < window) waker_.Wake();
       }
       if (!wbuf.empty() && !net::WriteAll(fd, wbuf.data(), wbuf.size())) return;
     }
@@ -208,15 +298,17 @@ class StreamLink {
   ConnectFn connect_;
   Channel* owner_;
   Channel::ReceiveFn rx_;
-  [[maybe_unused]] bool all_;
+  bool lossy_;  ///< serial: frames can be lost without the connection dropping
   std::atomic<bool> stop_{false}, dead_{false};
   net::Waker waker_;
   std::thread thread_;
   mutable std::mutex mu_;
   std::deque<MsgPtr> outq_;
-  std::deque<std::pair<uint64_t, std::vector<uint8_t>>> unacked_;
+  std::deque<Unacked> unacked_;
+  Clock::time_point front_since_ = Clock::now();
   uint64_t next_seq_ = 1;
   uint64_t last_rx_ = 0;
+  uint64_t peer_inc_ = 0;
   uint64_t counted_errors_ = 0;
 };
 
@@ -404,7 +496,7 @@ class IpChannel : public Channel {
         return fd;
       };
     }
-    stream_ = std::make_unique<StreamLink>(o, fn, this, rx, false);
+    stream_ = std::make_unique<StreamLink>(o, fn, this, rx, /*lossy=*/false);
     udp_ = std::make_unique<UdpLink>(cfg, o, this, rx);
   }
   ~IpChannel() override { Stop(); }
@@ -450,9 +542,9 @@ class IpChannel : public Channel {
 
 class StreamChannel : public Channel {
  public:
-  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx)
+  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx, bool lossy)
       : name_(std::move(name)) {
-    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), true);
+    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), lossy);
   }
   ~StreamChannel() override { Stop(); }
   void Start() override { stream_->Start(); }
@@ -498,7 +590,7 @@ std::unique_ptr<Channel> MakeSerialChannel(const ChannelConfig& c, const Channel
   std::string dev = c.device;
   auto ch = std::make_unique<StreamChannel>(
       std::string(c.mode == ChannelMode::LINK ? "ser link " : "ser bridge ") + dev, o,
-      [dev](const std::atomic<bool>&) { return OpenSerial(dev); }, std::move(rx));
+      [dev](const std::atomic<bool>&) { return OpenSerial(dev); }, std::move(rx), /*lossy=*/true);
   ch->mode = c.mode;
   ch->level = c.level;
   return ch;
@@ -515,7 +607,7 @@ std::unique_ptr<Channel> MakeDialledTcpChannel(const std::string& addr, int port
         int fd = net::TcpConnect("", addr, port, 500);
         return fd < 0 ? kGiveUp : fd;
       },
-      std::move(rx));
+      std::move(rx), /*lossy=*/false);
   return ch;
 }
 
@@ -528,7 +620,7 @@ std::unique_ptr<Channel> MakeAcceptedTcpChannel(int fd, const ChannelOptions& o,
         *used = true;
         return fd;
       },
-      std::move(rx));
+      std::move(rx), /*lossy=*/false);
 }
 
 }  // namespace mrt::dcdt

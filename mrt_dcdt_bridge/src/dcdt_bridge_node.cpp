@@ -70,7 +70,7 @@ class BridgeNode {
       }
     }
     member_ = std::make_unique<BridgeMember>(
-        agora_.get(), mapping, [this](const TopicMapping& m, const Msg& msg, const XmlMessage* xml) { ToRos(m, msg, xml); });
+        agora_.get(), mapping, [this](const TopicMapping& m, const Msg& msg, const XmlMessage* xml) { return ToRos(m, msg, xml); });
     for (const auto& m : member_->mapping().to_dcdt) Subscribe(nh, m, o.queue_size);
     diag_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     diag_timer_ = nh.createTimer(ros::Duration(o.diagnostics_period), [this](const ros::TimerEvent&) { Diagnostics(); });
@@ -89,7 +89,7 @@ class BridgeNode {
   }
 
  private:
-  void ToRos(const TopicMapping& m, const Msg& msg, const XmlMessage* xml) {
+  bool ToRos(const TopicMapping& m, const Msg& msg, const XmlMessage* xml) {
     auto& pub = pubs_.at(m.type);
     try {
       switch (m.kind) {
@@ -104,9 +104,11 @@ class BridgeNode {
         }
       }
     } catch (const XmlError& e) {
-      member_->CountError(std::string("type ") + std::to_string(m.type) + ": " + e.what(), true);
+      member_->CountError(std::string("type ") + std::to_string(m.type) + ": " + e.what(), BridgeError::CONVERSION);
       ROS_WARN_THROTTLE(5.0, "dcdt_bridge: dropped a DCDT message of type %d: %s", m.type, e.what());
+      return false;
     }
+    return true;
   }
 
   template <class M>
@@ -117,7 +119,7 @@ class BridgeNode {
                                       try {
                                         member_->Share(m, EncodeXml(conv(*ev.getConstMessage())));
                                       } catch (const XmlError& e) {
-                                        member_->CountError(m.topic + ": " + e.what(), true);
+                                        member_->CountError(m.topic + ": " + e.what(), BridgeError::CONVERSION);
                                         ROS_WARN_THROTTLE(5.0, "dcdt_bridge: dropped a message of %s: %s",
                                                           m.topic.c_str(), e.what());
                                       }
@@ -156,8 +158,11 @@ class BridgeNode {
     int connected = 0;
     for (const auto& c : a.channels) connected += c.connected ? 1 : 0;
     const int peers = a.inner_peers + a.finder_peers + connected;
-    st.level = b.parse_errors > 0 || b.dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN
-                                                     : diagnostic_msgs::DiagnosticStatus::OK;
+    uint64_t channel_errors = 0;
+    for (const auto& c : a.channels) channel_errors += c.errors;
+    const bool trouble = b.parse_errors > 0 || b.conversion_errors > 0 || b.dropped > 0 || a.mailbox_dropped > 0 ||
+                         a.hop_limited > 0 || a.inner_errors > 0 || channel_errors > 0;
+    st.level = trouble ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     st.message = peers > 0 ? "bridging" : "no peer Agora seen";
     if (peers == 0 && st.level == diagnostic_msgs::DiagnosticStatus::OK) st.level = diagnostic_msgs::DiagnosticStatus::WARN;
     auto kv = [&](const std::string& k, const std::string& v) {
@@ -176,13 +181,19 @@ class BridgeNode {
     for (const auto& [type, n] : b.in) kv("in." + std::to_string(type), std::to_string(n));
     for (const auto& [type, n] : b.out) kv("out." + std::to_string(type), std::to_string(n));
     kv("parse_errors", std::to_string(b.parse_errors));
+    kv("conversion_errors", std::to_string(b.conversion_errors));
     kv("dropped", std::to_string(b.dropped));
+    kv("mailbox_dropped", std::to_string(a.mailbox_dropped));
+    kv("hop_limited", std::to_string(a.hop_limited));
+    kv("inner_errors", std::to_string(a.inner_errors));
+    kv("channel_errors", std::to_string(channel_errors));
     kv("duplicates_suppressed", std::to_string(a.duplicates));
     if (!b.last_error.empty()) kv("last_error", b.last_error);
     for (const auto& c : a.channels)
       kv("channel " + c.name, std::string(c.connected ? "up" : "down") + " sent=" + std::to_string(c.sent) +
                                   " received=" + std::to_string(c.received) + " resent=" + std::to_string(c.resent) +
-                                  " dropped=" + std::to_string(c.dropped));
+                                  " dropped=" + std::to_string(c.dropped) + " errors=" + std::to_string(c.errors) +
+                                  " gaps=" + std::to_string(c.gaps) + " reconnects=" + std::to_string(c.reconnects));
     arr.status.push_back(st);
     diag_pub_.publish(arr);
   }

@@ -38,13 +38,18 @@ std::vector<uint8_t> Begin(FrameKind kind, size_t body_size) {
   Put8(b, kVersion);
   Put8(b, static_cast<uint8_t>(kind));
   Put32(b, static_cast<uint32_t>(body_size));
+  Put32(b, Crc32(b.data(), 8));
   return b;
 }
 std::vector<uint8_t> Finish(std::vector<uint8_t> b) {
   Put32(b, Crc32(b.data(), b.size()));
   return b;
 }
-bool KnownKind(uint8_t k) { return k >= 1 && k <= 4; }
+bool KnownKind(uint8_t k) { return k >= 1 && k <= 5; }
+// Magic, version, kind and the header CRC over bytes [0, 8) (p has >= 12 bytes).
+bool HeaderOk(const uint8_t* p) {
+  return p[0] == kMagic0 && p[1] == kMagic1 && p[2] == kVersion && KnownKind(p[3]) && Crc32(p, 8) == Get32(p + 8);
+}
 
 }  // namespace
 
@@ -67,6 +72,7 @@ std::vector<uint8_t> EncodeMsg(const Msg& m, uint64_t link_seq) {
   Put8(b, h.hops);
   Put8(b, h.remote ? 1 : 0);
   Put64(b, static_cast<uint64_t>(h.creation_time));
+  Put64(b, h.incarnation);
   Put64(b, h.seq);
   Put64(b, link_seq);
   Put32(b, len);
@@ -81,10 +87,19 @@ std::vector<uint8_t> EncodeAck(uint64_t seq) {
   return Finish(std::move(b));
 }
 
+std::vector<uint8_t> EncodeNack(uint64_t seq) {
+  auto b = Begin(FrameKind::NACK, 8);
+  Put64(b, seq);
+  return Finish(std::move(b));
+}
+
 std::vector<uint8_t> EncodeHello(const Hello& h) {
-  auto b = Begin(FrameKind::HELLO, 12);
+  auto b = Begin(FrameKind::HELLO, 29);
   Put32(b, static_cast<uint32_t>(h.agora_id));
+  Put64(b, h.incarnation);
+  Put64(b, h.peer_incarnation);
   Put64(b, h.last_rx);
+  Put8(b, h.reply ? 1 : 0);
   return Finish(std::move(b));
 }
 
@@ -104,7 +119,7 @@ std::vector<uint8_t> EncodeBeacon(const Beacon& bc) {
 bool DecodeMsgBody(const std::vector<uint8_t>& body, MsgFrame* out) {
   if (body.size() < kMsgBodyFixed) return false;
   const uint8_t* p = body.data();
-  const uint32_t len = Get32(p + 40);
+  const uint32_t len = Get32(p + 48);
   if (len > kMaxPayload || body.size() != kMsgBodyFixed + len) return false;
   const uint8_t flags = p[15];
   if (p[13] > DCDT_DW_GUARANTEED || (flags & ~1u) != 0) return false;
@@ -117,8 +132,9 @@ bool DecodeMsgBody(const std::vector<uint8_t>& body, MsgFrame* out) {
   h.hops = p[14];
   h.remote = flags & 1;
   h.creation_time = static_cast<int64_t>(Get64(p + 16));
-  h.seq = Get64(p + 24);
-  out->link_seq = Get64(p + 32);
+  h.incarnation = Get64(p + 24);
+  h.seq = Get64(p + 32);
+  out->link_seq = Get64(p + 40);
   out->msg.SetPayload(p + kMsgBodyFixed, static_cast<int>(len));
   return true;
 }
@@ -130,9 +146,12 @@ bool DecodeAckBody(const std::vector<uint8_t>& body, uint64_t* seq) {
 }
 
 bool DecodeHelloBody(const std::vector<uint8_t>& body, Hello* out) {
-  if (body.size() != 12) return false;
+  if (body.size() != 29 || (body[28] & ~1u) != 0) return false;
   out->agora_id = static_cast<int32_t>(Get32(body.data()));
-  out->last_rx = Get64(body.data() + 4);
+  out->incarnation = Get64(body.data() + 4);
+  out->peer_incarnation = Get64(body.data() + 12);
+  out->last_rx = Get64(body.data() + 20);
+  out->reply = body[28] & 1;
   return true;
 }
 
@@ -151,13 +170,12 @@ bool DecodeBeaconBody(const std::vector<uint8_t>& body, Beacon* out) {
 }
 
 bool DecodeDatagram(const uint8_t* data, size_t n, Frame* out) {
-  if (n < kFrameOverhead || data[0] != kMagic0 || data[1] != kMagic1 || data[2] != kVersion || !KnownKind(data[3]))
-    return false;
+  if (n < kFrameOverhead || !HeaderOk(data)) return false;
   const uint32_t len = Get32(data + 4);
   if (len > kMaxBody || n != kFrameOverhead + len) return false;
-  if (Crc32(data, 8 + len) != Get32(data + 8 + len)) return false;
+  if (Crc32(data, kFrameHeader + len) != Get32(data + kFrameHeader + len)) return false;
   out->kind = static_cast<FrameKind>(data[3]);
-  out->body.assign(data + 8, data + 8 + len);
+  out->body.assign(data + kFrameHeader, data + kFrameHeader + len);
   return true;
 }
 
@@ -172,9 +190,9 @@ void FrameDecoder::Feed(const uint8_t* data, size_t n) {
 std::optional<Frame> FrameDecoder::Next() {
   while (true) {
     const size_t avail = buf_.size() - pos_;
-    if (avail < 8) return std::nullopt;
+    if (avail < kFrameHeader) return std::nullopt;
     const uint8_t* p = buf_.data() + pos_;
-    if (p[0] != kMagic0 || p[1] != kMagic1 || p[2] != kVersion || !KnownKind(p[3])) {
+    if (!HeaderOk(p)) {
       ++errors_;
       // Resync: skip to the next possible magic.
       size_t skip = 1;
@@ -189,12 +207,12 @@ std::optional<Frame> FrameDecoder::Next() {
       continue;
     }
     if (avail < kFrameOverhead + len) return std::nullopt;
-    if (Crc32(p, 8 + len) != Get32(p + 8 + len)) {
+    if (Crc32(p, kFrameHeader + len) != Get32(p + kFrameHeader + len)) {
       ++errors_;
       pos_ += 1;
       continue;
     }
-    Frame f{static_cast<FrameKind>(p[3]), std::vector<uint8_t>(p + 8, p + 8 + len)};
+    Frame f{static_cast<FrameKind>(p[3]), std::vector<uint8_t>(p + kFrameHeader, p + kFrameHeader + len)};
     pos_ += kFrameOverhead + len;
     return f;
   }

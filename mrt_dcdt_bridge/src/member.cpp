@@ -49,6 +49,7 @@ void Member::ShareMsg(Msg* msg) {
   h.agora_id = agora_->GetAgoraID();
   h.hops = 0;
   h.remote = false;
+  h.incarnation = agora_->Incarnation();
   h.seq = agora_->NextSeq();
   agora_->Route(std::move(owned), Source{Source::MEMBER, nullptr});
 }

@@ -28,8 +28,19 @@ void PostOffice::Register(MailBox* box) {
 
 void PostOffice::Unregister(MailBox* box) {
   std::lock_guard<std::mutex> l(mutex_);
-  boxes_.erase(box->member_id);
+  auto it = boxes_.find(box->member_id);
+  if (it != boxes_.end() && it->second == box) {
+    drops_of_unregistered_ += box->dropped;
+    boxes_.erase(it);
+  }
   for (auto& [type, m] : subs_) m.erase(box->member_id);
+}
+
+uint64_t PostOffice::MailboxDrops() {
+  std::lock_guard<std::mutex> l(mutex_);
+  uint64_t n = drops_of_unregistered_;
+  for (const auto& [id, box] : boxes_) n += box->dropped;
+  return n;
 }
 
 void PostOffice::Subscribe(int member_id, int type, int scope_mask) {

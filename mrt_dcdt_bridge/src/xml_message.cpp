@@ -209,6 +209,13 @@ std::string EncodeXml(const XmlMessage& m) {
     }
     out += ">\n";
     for (const auto& a : o.attributes) {
+      // The decoder's rules: refuse to write what no decoder would read.
+      if (!(a.variability >= 0))
+        throw XmlError(0, "object '" + o.name + "' attribute '" + a.name + "': variability must be >= 0, got " +
+                              std::to_string(a.variability));
+      if (!(a.reliability >= 0 && a.reliability <= 1))
+        throw XmlError(0, "object '" + o.name + "' attribute '" + a.name + "': reliability must be in [0, 1], got " +
+                              std::to_string(a.reliability));
       out += "    <attribute";
       Attr(out, "name", a.name);
       if (a.symbol.empty()) Attr(out, "value", Num(a.value));

@@ -86,4 +86,45 @@ TEST(Conversions, WrongShapeIsRejected) {
   EXPECT_THROW(ros_conv::ToCrispData(x), XmlError);
 }
 
+XmlMessage Stamped(const char* time) {
+  return DecodeXml(std::string("<?xml version=\"1.0\"?>\n<message time=\"") + time + "\"/>\n");
+}
+
+TEST(Conversions, TimesOutsideRosTimeAreRejectedNotWrapped) {
+  // ROS time: uint32 seconds, so [0, 2^32 - 1] s.
+  for (const char* t : {"-1", "-4294967296", "4294967296", "4294967296.5", "9999999999"}) {
+    const XmlMessage x = Stamped(t);
+    EXPECT_THROW(ros_conv::ToPercept(x), XmlError) << t;
+    EXPECT_THROW(ros_conv::ToCrispData(x), XmlError) << t;
+    EXPECT_THROW(ros_conv::ToCommands(x), XmlError) << t;
+  }
+  try {
+    ros_conv::ToPercept(Stamped("-1"));
+  } catch (const XmlError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the ROS time range"), std::string::npos) << e.what();
+  }
+  // The edges themselves convert exactly.
+  auto lo = ros_conv::ToPercept(Stamped("0"));
+  EXPECT_EQ(lo.header.stamp.sec, 0u);
+  EXPECT_EQ(lo.header.stamp.nsec, 0u);
+  auto hi = ros_conv::ToPercept(Stamped("4294967295.999999999"));
+  EXPECT_EQ(hi.header.stamp.sec, 4294967295u);
+  EXPECT_EQ(hi.header.stamp.nsec, 999999999u);
+}
+
+TEST(Conversions, RosValuesNoDecoderAcceptsAreRefused) {
+  auto p = Sample();
+  p.objects[0].attributes[0].reliability = 1.25;
+  EXPECT_THROW(EncodeXml(ros_conv::FromPercept(p)), XmlError);
+  p = Sample();
+  p.objects[1].attributes[0].variability = -0.5;
+  EXPECT_THROW(EncodeXml(ros_conv::FromPercept(p)), XmlError);
+  mrt_msgs::CrispDataArray c;
+  mrt_msgs::CrispData d;
+  d.name = "x";
+  d.reliability = 2;
+  c.data.push_back(d);
+  EXPECT_THROW(EncodeXml(ros_conv::FromCrispData(c)), XmlError);
+}
+
 }  // namespace

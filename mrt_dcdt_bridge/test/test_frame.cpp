@@ -1,6 +1,8 @@
 // Wire protocol: golden bytes, round trips, resynchronisation, rejection.
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <cstring>
 
 #include "mrt_dcdt_bridge/frame.h"
@@ -16,6 +18,7 @@ Msg Sample() {
   h.hops = 2;
   h.remote = true;
   h.creation_time = 0x0102030405060708LL;
+  h.incarnation = 0x1112131415161718ULL;
   h.seq = 42;
   m.SetPayload("hi", 2);
   return m;
@@ -26,26 +29,59 @@ TEST(Frame, Crc32MatchesTheIeeeCheckValue) {
   EXPECT_EQ(Crc32(reinterpret_cast<const uint8_t*>(s), 9), 0xCBF43926u);
 }
 
+// CRC-32 by zlib: an implementation independent of the one under test.
+uint32_t ZCrc(const std::vector<uint8_t>& b, size_t from, size_t n) {
+  return static_cast<uint32_t>(crc32(0L, b.data() + from, static_cast<uInt>(n)));
+}
+
+uint32_t Be32(const std::vector<uint8_t>& b, size_t at) {
+  return (uint32_t(b[at]) << 24) | (uint32_t(b[at + 1]) << 16) | (uint32_t(b[at + 2]) << 8) | b[at + 3];
+}
+
 TEST(Frame, MsgGoldenBytes) {
   auto b = EncodeMsg(Sample(), 9);
-  // Written by hand from the README table.
-  const std::vector<uint8_t> head = {
-      0x44, 0x43, 0x01, 0x01,                          // magic "DC", version 1, kind MSG
-      0x00, 0x00, 0x00, 46,                            // body length 44 + 2
+  // Written by hand from the README tables (version 2).
+  const std::vector<uint8_t> header = {
+      0x44, 0x43, 0x02, 0x01,  // magic "DC", version 2, kind MSG
+      0x00, 0x00, 0x00, 54};   // body length 52 + 2
+  const std::vector<uint8_t> body = {
       0x00, 0x00, 0x00, 18,                            // type MSG_FROM_VISION
       0x00, 0x00, 0x00, 3,                             // member id
       0x01, 0x02, 0x03, 0x04,                          // agora id
       5, 1, 2, 1,                                      // priority, warranty, hops, flags(remote)
       0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07, 0x08,  // creation time
+      0x11, 0x12, 0x13, 0x14, 0x15, 0x16, 0x17, 0x18,  // origin incarnation
       0, 0, 0, 0, 0, 0, 0, 42,                         // origin seq
       0, 0, 0, 0, 0, 0, 0, 9,                          // link seq
       0, 0, 0, 2,                                      // payload length
       'h', 'i'};
-  ASSERT_EQ(b.size(), head.size() + 4);
-  EXPECT_TRUE(std::equal(head.begin(), head.end(), b.begin()));
-  const uint32_t crc = Crc32(b.data(), head.size());
-  EXPECT_EQ(b[head.size()], crc >> 24);
-  EXPECT_EQ(b.back(), crc & 0xFF);
+  ASSERT_EQ(b.size(), 8u + 4u + body.size() + 4u);
+  EXPECT_TRUE(std::equal(header.begin(), header.end(), b.begin()));
+  EXPECT_EQ(Be32(b, 8), ZCrc(header, 0, 8));  // header CRC
+  EXPECT_TRUE(std::equal(body.begin(), body.end(), b.begin() + 12));
+  EXPECT_EQ(Be32(b, 12 + body.size()), ZCrc(b, 0, 12 + body.size()));  // frame CRC
+}
+
+TEST(Frame, HelloAndNackGoldenBytes) {
+  auto h = EncodeHello(Hello{0x0A0B0C0D, 0x0102030405060708ULL, 0x1112131415161718ULL, 300, true});
+  const std::vector<uint8_t> head = {0x44, 0x43, 0x02, 0x03, 0, 0, 0, 29};  // HELLO, 29-byte body
+  const std::vector<uint8_t> body = {
+      0x0A, 0x0B, 0x0C, 0x0D,                          // agora id
+      0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07, 0x08,  // incarnation
+      0x11, 0x12, 0x13, 0x14, 0x15, 0x16, 0x17, 0x18,  // peer incarnation
+      0, 0, 0, 0, 0, 0, 0x01, 0x2C,                    // last link seq received: 300
+      1};                                              // flags: reply requested
+  ASSERT_EQ(h.size(), 12u + 29u + 4u);
+  EXPECT_TRUE(std::equal(head.begin(), head.end(), h.begin()));
+  EXPECT_EQ(Be32(h, 8), ZCrc(head, 0, 8));
+  EXPECT_TRUE(std::equal(body.begin(), body.end(), h.begin() + 12));
+  EXPECT_EQ(Be32(h, 41), ZCrc(h, 0, 41));
+  auto n = EncodeNack(7);
+  const std::vector<uint8_t> nack = {0x44, 0x43, 0x02, 0x05, 0, 0, 0, 8};
+  ASSERT_EQ(n.size(), 24u);
+  EXPECT_TRUE(std::equal(nack.begin(), nack.end(), n.begin()));
+  EXPECT_EQ(n[19], 7);
+  EXPECT_EQ(Be32(n, 20), ZCrc(n, 0, 20));
 }
 
 TEST(Frame, MsgRoundTrip) {
@@ -66,6 +102,7 @@ TEST(Frame, MsgRoundTrip) {
   EXPECT_EQ(h.hops, 2);
   EXPECT_TRUE(h.remote);
   EXPECT_EQ(h.creation_time, 0x0102030405060708LL);
+  EXPECT_EQ(h.incarnation, 0x1112131415161718ULL);
   EXPECT_EQ(h.seq, 42u);
   EXPECT_EQ(out.msg.PayloadString(), "hi");
   EXPECT_EQ(static_cast<const char*>(out.msg.GetPayload())[2], '\0');  // NUL after the payload
@@ -78,12 +115,15 @@ TEST(Frame, ControlFramesRoundTrip) {
   uint64_t s;
   ASSERT_TRUE(DecodeAckBody(f.body, &s));
   EXPECT_EQ(s, 123456789012345ull);
-  auto h = EncodeHello(Hello{77, 5});
+  auto h = EncodeHello(Hello{77, 1234, 5678, 5, false});
   ASSERT_TRUE(DecodeDatagram(h.data(), h.size(), &f));
   Hello hh;
   ASSERT_TRUE(DecodeHelloBody(f.body, &hh));
   EXPECT_EQ(hh.agora_id, 77);
+  EXPECT_EQ(hh.incarnation, 1234u);
+  EXPECT_EQ(hh.peer_incarnation, 5678u);
   EXPECT_EQ(hh.last_rx, 5u);
+  EXPECT_FALSE(hh.reply);
   auto b = EncodeBeacon(Beacon{12, "host:/tmp/x", "127.0.0.1", 4321});
   ASSERT_TRUE(DecodeDatagram(b.data(), b.size(), &f));
   Beacon bb;
@@ -104,17 +144,37 @@ TEST(Frame, CorruptedOrTruncatedDatagramsAreRejected) {
   }
   EXPECT_FALSE(DecodeDatagram(b.data(), b.size() - 1, &f));
   auto v2 = b;
-  v2[2] = 2;  // unknown version
+  v2[2] = 3;  // unknown version
   EXPECT_FALSE(DecodeDatagram(v2.data(), v2.size(), &f));
 }
 
 TEST(Frame, OversizeLengthIsRejectedWithoutAllocating) {
-  std::vector<uint8_t> b = {0x44, 0x43, 1, 1, 0xFF, 0xFF, 0xFF, 0xFF};
+  std::vector<uint8_t> b = {0x44, 0x43, 2, 1, 0xFF, 0xFF, 0xFF, 0xFF};
+  const uint32_t hc = static_cast<uint32_t>(crc32(0L, b.data(), 8));  // a valid header CRC
+  for (int s = 24; s >= 0; s -= 8) b.push_back(static_cast<uint8_t>(hc >> s));
   FrameDecoder d;
   d.Feed(b.data(), b.size());
   EXPECT_FALSE(d.Next().has_value());
   EXPECT_GE(d.errors(), 1u);
-  EXPECT_LT(d.buffered(), 8u);
+  EXPECT_LT(d.buffered(), 12u);
+}
+
+TEST(Frame, CorruptedLengthIsCaughtByTheHeaderCrcWithoutWaiting) {
+  // A frame whose length field was hit (1 MiB instead of 54) followed by a
+  // good frame: the good one comes out at once, nothing waits for 1 MiB.
+  auto bad = EncodeMsg(Sample(), 1);
+  bad[5] ^= 0x10;
+  auto good = EncodeMsg(Sample(), 2);
+  FrameDecoder d;
+  d.Feed(bad.data(), bad.size());
+  d.Feed(good.data(), good.size());
+  auto f = d.Next();
+  ASSERT_TRUE(f.has_value());
+  MsgFrame mf;
+  ASSERT_TRUE(DecodeMsgBody(f->body, &mf));
+  EXPECT_EQ(mf.link_seq, 2u);
+  EXPECT_GE(d.errors(), 1u);
+  EXPECT_EQ(d.buffered(), 0u);
 }
 
 TEST(Frame, StreamDecoderResynchronisesAfterGarbageAndSplits) {
@@ -144,7 +204,7 @@ TEST(Frame, BodyWithWrongPayloadLengthIsRejected) {
   auto b = EncodeMsg(Sample());
   Frame f;
   ASSERT_TRUE(DecodeDatagram(b.data(), b.size(), &f));
-  f.body[43] = 3;  // payload length 3 but 2 bytes present
+  f.body[51] = 3;  // payload length 3 but 2 bytes present
   MsgFrame mf;
   EXPECT_FALSE(DecodeMsgBody(f.body, &mf));
 }

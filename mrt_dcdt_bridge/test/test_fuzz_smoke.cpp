@@ -48,7 +48,7 @@ TEST(FuzzSmoke, FrameDecoder) {
   mrt::dcdt::Msg m(18, 1, 2, 1);
   m.SetPayload("payload");
   auto f = mrt::dcdt::EncodeMsg(m, 3);
-  auto h = mrt::dcdt::EncodeHello({5, 6});
+  auto h = mrt::dcdt::EncodeHello({5, 6, 7, 8, true});
   auto b = mrt::dcdt::EncodeBeacon({1, "k", "127.0.0.1", 9});
   std::vector<uint8_t> two = f;
   two.insert(two.end(), h.begin(), h.end());

@@ -261,6 +261,43 @@ TEST(Integration, GuaranteedTcpLinkKilledAndRestartedLosesNothing) {
   EXPECT_GE(proxy.sessions.load(), 2);
 }
 
+// A publisher with a fixed agora id on a static ip link is killed and
+// started again with the same id: its second run's link and origin sequence
+// numbers restart at 1, and the subscriber must still get every message
+// (neither taken for a resend of the first run nor for a duplicate).
+TEST(Integration, RestartedAgoraWithFixedIdLosesNothing) {
+  const std::string d = TempDir("reinc");
+  int pa = FreePort(), pb = FreePort();
+  WriteFile(d + "/a.cfg", NetLine(FreePort()) + IpLine("link", 0, pa, pb));
+  WriteFile(d + "/b.cfg", NetLine(FreePort()) + IpLine("link", 0, pb, pa));
+  const int kCount = 40;
+  const std::string id = std::to_string(2000000 + ::getpid() % 100000);
+  auto b = Agora({"--config", d + "/b.cfg", "--no-inner", "--no-finder", "--subscribe", "21", "--expect",
+                  std::to_string(2 * kCount), "--duration", "30", "--out", d + "/b.txt"});
+  ASSERT_TRUE(WaitReady(d + "/b.txt"));
+  for (int run = 0; run < 2; ++run) {
+    const std::string out = d + "/a" + std::to_string(run) + ".txt";
+    auto a = Agora({"--config", d + "/a.cfg", "--no-inner", "--no-finder", "--id", id, "--publish", "21",
+                    "--warranty", "guaranteed", "--count", std::to_string(kCount), "--rate", "200", "--wait-peers",
+                    "1", "--duration", "30", "--out", out});
+    const size_t want = static_cast<size_t>((run + 1) * kCount);
+    EXPECT_TRUE(WaitFor([&] { return Lines(d + "/b.txt", "recv ").size() >= want; }, 15000))
+        << "run " << run << ": " << Slurp(d + "/b.txt") << Slurp(out);
+    a->Kill();  // SIGKILL: no goodbye of any kind
+  }
+  EXPECT_EQ(b->Wait(10000), 0);
+  auto recv = Lines(d + "/b.txt", "recv ");
+  ASSERT_EQ(recv.size(), static_cast<size_t>(2 * kCount)) << Slurp(d + "/b.txt");
+  for (int run = 0; run < 2; ++run) {
+    for (int i = 0; i < kCount; ++i) {
+      const auto& l = recv[static_cast<size_t>(run * kCount + i)];
+      EXPECT_EQ(Field(l, "agora"), id) << l;
+      EXPECT_EQ(Field(l, "seq"), std::to_string(i + 1)) << l;  // the second run counts from 1 again
+      EXPECT_EQ(Field(l, "payload"), "message " + std::to_string(i)) << l;
+    }
+  }
+}
+
 TEST(Integration, FinderDiscoversAgorasByMulticastOnLoopback) {
   const std::string da = TempDir("fa"), db = TempDir("fb");
   const int port = FreePort();

@@ -154,4 +154,29 @@ TEST(Xml, EncoderRefusesWhatXmlCannotCarry) {
   EXPECT_THROW(EncodeXml(n), XmlError);
 }
 
+TEST(Xml, EncoderRefusesWhatEveryDecoderRejects) {
+  // reliability must be in [0, 1] and variability >= 0 (README, DTD section).
+  auto with = [](double variability, double reliability) {
+    XmlMessage m;
+    m.objects.push_back({"ball", "Ball", {{"distance", 2.0, "", variability, reliability}}});
+    return m;
+  };
+  EXPECT_THROW(EncodeXml(with(0, 1.5)), XmlError);
+  EXPECT_THROW(EncodeXml(with(0, -0.25)), XmlError);
+  EXPECT_THROW(EncodeXml(with(0, std::nan(""))), XmlError);
+  EXPECT_THROW(EncodeXml(with(-1e-9, 1)), XmlError);
+  EXPECT_THROW(EncodeXml(with(std::nan(""), 1)), XmlError);
+  try {
+    EncodeXml(with(0, 1.5));
+  } catch (const XmlError& e) {
+    EXPECT_NE(std::string(e.what()).find("reliability must be in [0, 1]"), std::string::npos) << e.what();
+  }
+  // The bounds themselves are fine, and a symbolic attribute is checked too.
+  EXPECT_NO_THROW(DecodeXml(EncodeXml(with(0, 0))));
+  EXPECT_NO_THROW(DecodeXml(EncodeXml(with(0, 1))));
+  XmlMessage sym;
+  sym.objects.push_back({"ball", "Ball", {{"colour", 0, "orange", 0, 2}}});
+  EXPECT_THROW(EncodeXml(sym), XmlError);
+}
+
 }  // namespace

@@ -35,7 +35,11 @@ struct AgoraOptions {
 };
 
 struct AgoraStats {
-  uint64_t routed = 0, duplicates = 0, hop_limited = 0, inner_errors = 0;
+  uint64_t routed = 0;
+  uint64_t duplicates = 0;       ///< copies recognised by origin (agora id, incarnation, seq) and dropped
+  uint64_t hop_limited = 0;      ///< dropped after more than kMaxHops channels
+  uint64_t inner_errors = 0;     ///< malformed or undeliverable inner-link datagrams
+  uint64_t mailbox_dropped = 0;  ///< discarded because a Member's mailbox was full
   int inner_peers = 0;
   int finder_peers = 0;
   std::vector<int> peer_ids;  ///< Agoras seen: inner-link peers, Finder peers, channel peers (sorted, unique)
@@ -70,6 +74,9 @@ class Agora {
   void Shutdown();
 
   int GetAgoraID() const { return agora_id_; }
+  /// Random, non-zero, new in every process: tells a restarted Agora with a
+  /// fixed id from its previous run (wire: MSG origin, HELLO).
+  uint64_t Incarnation() const { return incarnation_; }
   bool IsNetwork() const { return options_.network; }
   PostOffice& GetPostOffice() { return *post_office_; }
   AgoraStats Stats();
@@ -89,10 +96,11 @@ class Agora {
  private:
   void Setup();
   void StopNetwork();
-  bool SeenBefore(int32_t agora, uint64_t seq);
+  bool SeenBefore(const MsgHeader& h);
 
   AgoraOptions options_;
   int agora_id_ = 0;
+  uint64_t incarnation_ = 0;
   std::unique_ptr<PostOffice> post_office_;
   std::atomic<int> member_counter_{0};
   std::atomic<uint64_t> seq_counter_{0};
@@ -105,8 +113,18 @@ class Agora {
   std::atomic<bool> shutdown_{false};
 
   std::mutex seen_mutex_;
-  std::unordered_set<uint64_t> seen_;
-  std::deque<uint64_t> seen_order_;
+  struct Origin {
+    int32_t agora;
+    uint64_t incarnation, seq;
+    bool operator==(const Origin& o) const { return agora == o.agora && incarnation == o.incarnation && seq == o.seq; }
+  };
+  struct OriginHash {
+    size_t operator()(const Origin& o) const {
+      return std::hash<uint64_t>()(o.seq * 0x9E3779B97F4A7C15ull ^ o.incarnation ^ static_cast<uint32_t>(o.agora));
+    }
+  };
+  std::unordered_set<Origin, OriginHash> seen_;
+  std::deque<Origin> seen_order_;
 
   std::mutex channels_mutex_;
   std::vector<std::unique_ptr<Channel>> channels_;

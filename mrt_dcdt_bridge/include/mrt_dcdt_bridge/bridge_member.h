@@ -16,17 +16,22 @@
 namespace mrt::dcdt {
 
 struct BridgeStats {
-  std::map<int, uint64_t> in;   ///< DCDT -> ROS, per type
+  std::map<int, uint64_t> in;   ///< DCDT -> ROS, per type: messages actually delivered
   std::map<int, uint64_t> out;  ///< ROS -> DCDT, per type
-  uint64_t parse_errors = 0;
-  uint64_t dropped = 0;
+  uint64_t parse_errors = 0;       ///< payloads that are not valid MRT XML
+  uint64_t conversion_errors = 0;  ///< valid XML or ROS messages that did not fit the mapped kind
+  uint64_t dropped = 0;            ///< unmapped types, oversize payloads
   std::string last_error;
 };
 
+enum class BridgeError { PARSE, CONVERSION, DROPPED };
+
 class BridgeMember : public Member {
  public:
-  /// xml is null for PayloadKind::RAW.
-  using Deliver = std::function<void(const TopicMapping& m, const Msg& msg, const XmlMessage* xml)>;
+  /// xml is null for PayloadKind::RAW. Returns whether the message was
+  /// delivered (false: it could not be converted, and the callback has
+  /// counted it with CountError).
+  using Deliver = std::function<bool(const TopicMapping& m, const Msg& msg, const XmlMessage* xml)>;
 
   BridgeMember(Agora* agora, BridgeMapping mapping, Deliver deliver);
   void Init() override;
@@ -35,7 +40,7 @@ class BridgeMember : public Member {
   /// ROS -> DCDT: shares payload as message type m.type (thread-safe).
   void Share(const TopicMapping& m, const std::string& payload);
   /// Records a message that could not be converted (counted, not shared).
-  void CountError(const std::string& what, bool parse_error);
+  void CountError(const std::string& what, BridgeError kind);
 
   BridgeStats Stats();
   const BridgeMapping& mapping() const { return mapping_; }

@@ -20,6 +20,7 @@ struct ChannelStats {
   bool connected = false;
   int peer_agora = 0;
   uint64_t sent = 0, received = 0, resent = 0, dropped = 0, errors = 0, reconnects = 0;
+  uint64_t gaps = 0;     ///< guaranteed frames discarded after a lost one (then resent)
   uint64_t pending = 0;  ///< queued or sent-but-unacknowledged messages
 };
 
@@ -43,10 +44,12 @@ class Channel {
 /// Options shared by the channel implementations.
 struct ChannelOptions {
   int agora_id = 0;
+  uint64_t incarnation = 0;         ///< this Agora's run (HELLO); set by the Agora
   int retransmit_interval_ms = 20;  ///< DCDT_DW_RETRANSMIT
   int retransmit_tries = 5;
   size_t max_unacked = 200000;      ///< DCDT_DW_GUARANTEED resend buffer (messages)
   int reconnect_ms = 50;
+  int stream_resend_ms = 300;       ///< guaranteed on a stream: resend the unacknowledged after this long without an ACK
 };
 
 std::unique_ptr<Channel> MakeIpChannel(const ChannelConfig& c, const ChannelOptions& o, Channel::ReceiveFn rx);

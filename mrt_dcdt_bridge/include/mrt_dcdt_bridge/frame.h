@@ -2,11 +2,12 @@
 // length-prefixed, CRC-protected frame.
 //   offset size
 //   0      2   magic 0x44 0x43 ("DC")
-//   2      1   version (1)
+//   2      1   version (2)
 //   3      1   kind (FrameKind)
 //   4      4   body length N, big-endian (<= kMaxBody)
-//   8      N   body
-//   8+N    4   CRC-32 (IEEE) of bytes [0, 8+N), big-endian
+//   8      4   header CRC-32 (IEEE) of bytes [0, 8), big-endian
+//   12     N   body
+//   12+N   4   CRC-32 (IEEE) of bytes [0, 12+N), big-endian
 #pragma once
 
 #include <cstdint>
@@ -18,16 +19,18 @@
 
 namespace mrt::dcdt {
 
-constexpr uint8_t kMagic0 = 0x44, kMagic1 = 0x43, kVersion = 1;
-constexpr size_t kFrameOverhead = 12;
-constexpr size_t kMsgBodyFixed = 44;
+constexpr uint8_t kMagic0 = 0x44, kMagic1 = 0x43, kVersion = 2;
+constexpr size_t kFrameHeader = 12;   ///< magic, version, kind, length, header CRC
+constexpr size_t kFrameOverhead = 16; ///< header + trailing CRC
+constexpr size_t kMsgBodyFixed = 52;
 constexpr uint32_t kMaxBody = kMaxPayload + kMsgBodyFixed;
 
 enum class FrameKind : uint8_t {
   MSG = 1,     ///< a DCDT message (MsgFrame)
   ACK = 2,     ///< link sequence acknowledged (8 bytes)
-  HELLO = 3,   ///< stream start: agora id (4) + last link seq received from the peer (8)
+  HELLO = 3,   ///< stream handshake: agora id, incarnation, peer incarnation known, last link seq received, flags
   BEACON = 4,  ///< Finder announcement (BeaconFrame)
+  NACK = 5,    ///< stream gap: link seqs up to this one received (8); resend everything after it
 };
 
 /// A message plus the per-channel link sequence number (0 = not acknowledged).
@@ -38,7 +41,10 @@ struct MsgFrame {
 
 struct Hello {
   int32_t agora_id = 0;
-  uint64_t last_rx = 0;
+  uint64_t incarnation = 0;       ///< random per process: a restarted Agora with the same id differs
+  uint64_t peer_incarnation = 0;  ///< the receiver's incarnation as the sender knows it (0 = none yet)
+  uint64_t last_rx = 0;           ///< last in-order link seq received from that incarnation
+  bool reply = false;             ///< the sender has not heard a HELLO naming its incarnation yet: answer
 };
 
 struct Beacon {
@@ -52,6 +58,7 @@ uint32_t Crc32(const uint8_t* data, size_t n);
 
 std::vector<uint8_t> EncodeMsg(const Msg& m, uint64_t link_seq = 0);
 std::vector<uint8_t> EncodeAck(uint64_t seq);
+std::vector<uint8_t> EncodeNack(uint64_t seq);
 std::vector<uint8_t> EncodeHello(const Hello& h);
 std::vector<uint8_t> EncodeBeacon(const Beacon& b);
 
@@ -71,8 +78,9 @@ bool DecodeBeaconBody(const std::vector<uint8_t>& body, Beacon* out);
 bool DecodeDatagram(const uint8_t* data, size_t n, Frame* out);
 
 /// Incremental stream decoder: feed bytes, pop frames. Garbage, bad
-/// versions, oversize lengths and CRC mismatches are skipped (resync on the
-/// next magic) and counted in errors().
+/// versions, header CRC mismatches (so a corrupted length is caught before
+/// waiting for its body), oversize lengths and body CRC mismatches are
+/// skipped (resync on the next magic) and counted in errors().
 class FrameDecoder {
  public:
   void Feed(const uint8_t* data, size_t n);

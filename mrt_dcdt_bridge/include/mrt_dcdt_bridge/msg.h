@@ -20,6 +20,7 @@ struct MsgHeader {
   uint8_t hops = 0;      ///< network channels travelled so far
   bool remote = false;   ///< entered this machine through a `link` channel
   DCDT_TIME creation_time = 0;
+  uint64_t incarnation = 0;  ///< random per run of the origin Agora (a restart with the same id differs)
   uint64_t seq = 0;      ///< per-origin-Agora sequence number (loop/duplicate suppression)
 };
 

@@ -71,6 +71,9 @@ class PostOffice {
   size_t WaitForMail(MailBox* box, const std::atomic<bool>* stop, std::chrono::milliseconds timeout);
   /// Wakes every waiting Member (used at shutdown).
   void WakeAll();
+  /// Messages discarded because a mailbox was full, over every mailbox this
+  /// PostOffice has held (unregistered ones included).
+  uint64_t MailboxDrops();
 
   int agora_id = 0;  ///< set by the Agora; used to recognise own messages
 
@@ -84,6 +87,7 @@ class PostOffice {
 
  private:
   std::map<int, MailBox*> boxes_;
+  uint64_t drops_of_unregistered_ = 0;
   std::map<int, std::map<int, int>> subs_;  // type -> member id -> scope mask
 };
 

@@ -48,7 +48,8 @@ extern const char* const kMrtMessageDtd;
 constexpr size_t kMaxXmlBytes = 1u << 20;
 
 /// Serialises (always valid against the DTD; numbers round-trip exactly).
-/// Throws XmlError for strings XML 1.0 cannot carry (control characters).
+/// Throws XmlError for strings XML 1.0 cannot carry (control characters),
+/// non-finite numbers, variability < 0 and reliability outside [0, 1].
 std::string EncodeXml(const XmlMessage& m);
 /// Parses and validates; throws XmlError.
 XmlMessage DecodeXml(const std::string& text);

@@ -1,5 +1,7 @@
 #include "ros/conversions.h"
 
+#include <cstdint>
+
 namespace mrt::dcdt::ros_conv {
 
 namespace {
@@ -8,7 +10,10 @@ void StampTo(const std_msgs::Header& h, XmlMessage* x) {
   x->nsec = h.stamp.nsec;
   x->frame = h.frame_id;
 }
+// ROS time is unsigned 32-bit seconds: anything else is refused, not wrapped.
 void StampFrom(const XmlMessage& x, std_msgs::Header* h) {
+  if (x.sec < 0 || x.sec > static_cast<int64_t>(UINT32_MAX))
+    throw XmlError(0, "time stamp " + std::to_string(x.sec) + " s is outside the ROS time range [0, 4294967295] s");
   h->stamp.sec = static_cast<uint32_t>(x.sec);
   h->stamp.nsec = x.nsec;
   h->frame_id = x.frame;
