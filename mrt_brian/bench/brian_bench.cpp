@@ -169,7 +169,11 @@ int main(int argc, char** argv) {
       const double base = baseline(b, inputs, seconds);
       print("isaac_baseline_run_trace_us_per_cycle", base, "us");
       print("isaac_speedup_vs_baseline", base / r.us_per_cycle, "ratio");
-      print("isaac_speedup_vs_2009_engine_150us", 150.0 / r.us_per_cycle, "ratio");
+      // The 2009 engine's ~150 us per IsAac cycle included its I/O (string
+      // input, trace output): compare it with the baseline, which does the
+      // same work, not with the fast path.
+      print("isaac_speedup_vs_2009_engine_150us_like_for_like", 150.0 / base, "ratio");
+      print("isaac_speedup_vs_2009_engine_150us_core_only", 150.0 / r.us_per_cycle, "ratio");
     }
   }
 

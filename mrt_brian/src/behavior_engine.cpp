@@ -5,14 +5,22 @@
 
 namespace mrt::brian {
 
-BehaviorEngine::BehaviorEngine() : filter_(std::make_unique<ThresholdFilter>()) {}
+BehaviorEngine::BehaviorEngine() : filter_(std::make_unique<ThresholdFilter>()) {
+  threshold_ = static_cast<const ThresholdFilter&>(*filter_).threshold();
+}
 
 int BehaviorEngine::add(std::unique_ptr<Behavior> b) {
   behaviors_.push_back(std::move(b));
   return size() - 1;
 }
 
+void BehaviorEngine::set_filter(std::unique_ptr<CandoFilter> f) {
+  if (const auto* t = dynamic_cast<const ThresholdFilter*>(f.get())) threshold_ = t->threshold();
+  filter_ = std::move(f);
+}
+
 void BehaviorEngine::set_threshold(double value) {
+  threshold_ = value;
   auto* t = dynamic_cast<ThresholdFilter*>(filter_.get());
   if (t) t->set_threshold(value);
   else filter_ = std::make_unique<ThresholdFilter>(value);

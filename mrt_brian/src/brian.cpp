@@ -228,6 +228,9 @@ void Brian::run_cycle(CycleTrace* trace) {
   preacher_.evaluate(state_);
   candoer_.evaluate(state_, cando_);
   wanter_.evaluate(state_, want_);
+  // Legacy: the WANT filter uses the same threshold as the CANDO filter,
+  // also after engine().set_threshold() at run time.
+  if (legacy) want_filter_.set_threshold(engine_.threshold());
   for (std::size_t b = 0; b < want_.size(); ++b)
     weights_[b] = legacy ? (want_filter_.active(want_[b]) ? want_[b].value : 0.0) : want_[b].value;
   ctx_.fired = trace ? &fired_ : nullptr;

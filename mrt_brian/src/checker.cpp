@@ -20,8 +20,10 @@ namespace {
 class Run {
  public:
   std::vector<Diagnostic> out;
+  std::set<std::string> failed;  // files that could not be read or parsed
 
   void report(const std::string& file, int line, const std::string& msg) { out.push_back({file, line, msg}); }
+  bool ok(const std::string& file) const { return !failed.count(file); }
 
   // Parses a file with `parse`, reporting a read or syntax error.
   template <typename T, typename F>
@@ -31,6 +33,7 @@ class Run {
       return parse_fn(read_text_file(file), file);
     } catch (const ParseError& e) {
       report(e.file(), e.line(), e.message());
+      failed.insert(file);
     }
     return {};
   }
@@ -43,7 +46,10 @@ struct Shapes {
 Shapes collect_shapes(Run& run, const std::vector<ShapeDef>& defs, const std::string& file) {
   Shapes s;
   for (const auto& d : defs) {
-    if (s.labels.count(d.name)) run.report(file, d.line, "shape '" + d.name + "' defined twice");
+    if (s.labels.count(d.name)) {  // the engine refuses it; its labels are not checked
+      run.report(file, d.line, "shape '" + d.name + "' defined twice");
+      continue;
+    }
     auto& l = s.labels[d.name];
     for (const auto& set : d.sets) {
       if (l.count(set.label)) run.report(file, set.line, "label '" + set.label + "' defined twice in shape '" + d.name + "'");
@@ -53,19 +59,40 @@ Shapes collect_shapes(Run& run, const std::vector<ShapeDef>& defs, const std::st
   return s;
 }
 
-// name -> labels of its shape, reporting associations to unknown shapes.
-std::map<std::string, std::set<std::string>> collect_assocs(Run& run, const std::vector<AssociationDef>& defs,
-                                                            const Shapes& shapes, const std::string& file,
-                                                            const char* what) {
-  std::map<std::string, std::set<std::string>> out;
+// Data or actions: name -> labels of its shape. A name whose shape is
+// unknown is `opaque` (its labels are not checked again); when the
+// association file or its shape file did not parse, the table is not
+// `complete` and unknown names are not reported either: one mistake, one
+// diagnostic.
+struct Names {
+  std::map<std::string, std::set<std::string>> labels;
+  std::set<std::string> opaque;
+  bool complete = true;
+  bool unknown_name(const std::string& name) const { return complete && !labels.count(name); }
+  bool unknown_label(const std::string& name, const std::string& label) const {
+    auto it = labels.find(name);
+    return it != labels.end() && !opaque.count(name) && !it->second.count(label);
+  }
+};
+
+Names collect_assocs(Run& run, const std::vector<AssociationDef>& defs, const Shapes& shapes, bool shapes_ok,
+                     const std::string& file, const char* what) {
+  Names out;
+  out.complete = run.ok(file);
+  std::map<std::string, int> first;
   for (const auto& a : defs) {
+    if (!first.emplace(a.name, a.line).second)
+      run.report(file, a.line, std::string(what) + " '" + a.name + "' associated twice (first at line " +
+                                   std::to_string(first[a.name]) + ")");
     auto it = shapes.labels.find(a.shape);
     if (it == shapes.labels.end()) {
-      run.report(file, a.line, "unknown shape '" + a.shape + "' for " + what + " '" + a.name + "'");
-      out[a.name];
+      if (shapes_ok) run.report(file, a.line, "unknown shape '" + a.shape + "' for " + what + " '" + a.name + "'");
+      out.labels[a.name];
+      out.opaque.insert(a.name);
       continue;
     }
-    out[a.name] = it->second;
+    out.labels[a.name] = it->second;
+    out.opaque.erase(a.name);
   }
   return out;
 }
@@ -94,8 +121,10 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
 
   const Shapes in_shapes = collect_shapes(run, shapes_in, f.shape_ctof);
   const Shapes out_shapes = collect_shapes(run, shapes_out, f.s_shape);
-  const auto data = collect_assocs(run, assocs_in, in_shapes, f.ctof, "datum");
-  const auto actions = collect_assocs(run, assocs_out, out_shapes, f.s_ftoc, "action");
+  const Names data = collect_assocs(run, assocs_in, in_shapes, run.ok(f.shape_ctof), f.ctof, "datum");
+  const Names actions = collect_assocs(run, assocs_out, out_shapes, run.ok(f.s_shape), f.s_ftoc, "action");
+  const bool behaviors_ok = run.ok(f.behaviors);
+  const bool predicates_ok = run.ok(f.predicates) && run.ok(f.predicate_actions);
 
   // Behaviours, levels.
   std::map<std::string, int> level_of;
@@ -119,10 +148,17 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
   // Predicates: where each is defined (file index 0 = Predicate.ini, 1 = PredicateActions.ini).
   struct Where { int file; int line; };
   std::map<std::string, Where> defined;
-  for (const auto& d : preds)
-    if (!defined.count(d.name)) defined[d.name] = {0, d.line};
-  for (const auto& d : pacts)
-    if (!defined.count(d.name)) defined[d.name] = {1, d.line};
+  auto define = [&](const std::vector<DefinitionDef>& defs, int index, const std::string& file) {
+    for (const auto& d : defs) {
+      auto [it, fresh] = defined.emplace(d.name, Where{index, d.line});
+      if (!fresh)
+        run.report(file, d.line, "predicate '" + d.name + "' defined twice (first at " +
+                                     (it->second.file == 0 ? f.predicates : f.predicate_actions) + ":" +
+                                     std::to_string(it->second.line) + ")");
+    }
+  };
+  define(preds, 0, f.predicates);
+  define(pacts, 1, f.predicate_actions);
 
   // Checks one expression. `file_index`/`line`: position of the definition
   // being checked (for forward references), file_index -1 in rules and
@@ -137,17 +173,16 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
             for (const auto& a : e.args) expr(a, file, file_index, def_line);
             break;
           case ExprAst::kDatum: {
-            auto it = data.find(e.name);
-            if (it == data.end())
+            if (data.unknown_name(e.name))
               run.report(file, e.line, "unknown datum '" + e.name + "' (not in " + f.ctof + ")");
-            else if (!it->second.count(e.label))
+            else if (data.unknown_label(e.name, e.label))
               run.report(file, e.line, "unknown label '" + e.label + "' of datum '" + e.name + "'");
             break;
           }
           case ExprAst::kPredicate: {
             auto it = defined.find(e.name);
             if (it == defined.end()) {
-              run.report(file, e.line, "unknown predicate '" + e.name + "'");
+              if (predicates_ok) run.report(file, e.line, "unknown predicate '" + e.name + "'");
             } else if (file_index == kConditions && it->second.file == 1) {
               run.report(file, e.line, "predicate action '" + e.name +
                                            "' in a CANDO/WANT condition, which is evaluated before any predicate action");
@@ -159,12 +194,11 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
             break;
           }
           case ExprAst::kProposal: {
-            if (e.name != "SOMEBEHAVIOR" && !level_of.count(e.name))
+            if (behaviors_ok && e.name != "SOMEBEHAVIOR" && !level_of.count(e.name))
               run.report(file, e.line, "unknown behaviour '" + e.name + "' in &" + e.name + "." + e.action + "." + e.label);
-            auto it = actions.find(e.action);
-            if (it == actions.end())
+            if (actions.unknown_name(e.action))
               run.report(file, e.line, "unknown action '" + e.action + "' (not in " + f.s_ftoc + ")");
-            else if (e.label != "ANY" && !it->second.count(e.label))
+            else if (e.label != "ANY" && actions.unknown_label(e.action, e.label))
               run.report(file, e.line, "unknown label '" + e.label + "' of action '" + e.action + "'");
             break;
           }
@@ -176,7 +210,7 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
   auto conditions = [&](const std::vector<DefinitionDef>& defs, const std::string& file, const char* what) {
     std::set<std::string> seen;
     for (const auto& d : defs) {
-      if (!level_of.count(d.name))
+      if (behaviors_ok && !level_of.count(d.name))
         run.report(file, d.line, std::string(what) + " for undefined behaviour '" + d.name + "'");
       if (!seen.insert(d.name).second) run.report(file, d.line, std::string(what) + " of '" + d.name + "' defined twice");
       expr(d.expr, file, kConditions, 0);
@@ -198,10 +232,9 @@ std::vector<Diagnostic> Checker::check(const ConfigFiles& f) const {
     for (const auto& r : rules) {
       expr(r.precondition, path, -1, 0);
       for (const auto& a : r.actions) {
-        auto it = actions.find(a.action);
-        if (it == actions.end()) {
+        if (actions.unknown_name(a.action)) {
           run.report(path, a.line, "unknown action '" + a.action + "' (not in " + f.s_ftoc + ")");
-        } else if (!(a.del && (a.label == "ANY" || a.label[0] == '*')) && !it->second.count(a.label)) {
+        } else if (!(a.del && (a.label == "ANY" || a.label[0] == '*')) && actions.unknown_label(a.action, a.label)) {
           run.report(path, a.line, "unknown label '" + a.label + "' of action '" + a.action + "'");
         }
         if (a.del && b.level == 1)

@@ -19,8 +19,9 @@ using mrt::common::ParseError;
 
 namespace {
 std::string first_existing(const fs::path& dir, std::initializer_list<const char*> names, bool required) {
+  std::error_code ec;  // an unreadable entry counts as missing; reading it reports why
   for (const char* n : names)
-    if (fs::is_regular_file(dir / n)) return (dir / n).string();
+    if (fs::is_regular_file(dir / n, ec)) return (dir / n).string();
   if (!required) return "";
   return (dir / *names.begin()).string();  // reported as "cannot open file" when read
 }
@@ -28,7 +29,9 @@ std::string first_existing(const fs::path& dir, std::initializer_list<const char
 
 ConfigFiles ConfigFiles::from_directory(const std::string& dir) {
   const fs::path d(dir);
-  if (!fs::is_directory(d)) throw ParseError(dir, 0, 0, "not a directory");
+  std::error_code ec;
+  if (!fs::is_directory(d, ec))
+    throw ParseError(dir, 0, 0, ec ? "cannot access directory: " + ec.message() : std::string("not a directory"));
   ConfigFiles f;
   f.base_dir = dir;
   f.ctof = first_existing(d, {"ctof.txt"}, true);
@@ -80,7 +83,14 @@ ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
 }
 
 ConfigFiles ConfigFiles::locate(const std::string& path) {
-  if (fs::is_directory(path)) return from_directory(path);
+  // error_code overloads: a path that cannot even be examined (a
+  // non-searchable directory on the way, a name too long) is a ParseError
+  // naming the path, never a std::filesystem::filesystem_error.
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw ParseError(path, 0, 0, "cannot access: " + ec.message());
+  if (fs::is_directory(st)) return from_directory(path);
   return from_list_file(path);
 }
 

@@ -22,6 +22,10 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
         throw ParseError(shapes_file, set.line, set.column,
                          "barycenter defuzzification needs sets with an area (TRI DIV TRA REC), got " + set.type);
   });
+  for (const Shape& sh : shapes_) {
+    polygons_.emplace_back();
+    for (int l = 0; l < sh.size(); ++l) polygons_.back().push_back(sh.set(l).polygons());
+  }
   for (const auto& a : assocs) {
     const int shape = shape_ids.find(a.shape);
     if (shape < 0)
@@ -56,7 +60,8 @@ void Defuzzyfier::defuzzify(const ComposedActions& in, std::vector<double>& valu
       for (int l = 0; l < labels; ++l) {
         if (!in.present(a, l)) continue;
         const double mu = in.get(a, l);
-        for (const Polygon& poly : shape(a).set(l).polygons()) {
+        const auto& outlines = polygons_[static_cast<std::size_t>(shape_of_[static_cast<std::size_t>(a)])];
+        for (const Polygon& poly : outlines[static_cast<std::size_t>(l)]) {
           const AreaMoment am = clipped_area(poly, mu);
           num += am.moment;
           den += am.area;
@@ -87,22 +92,25 @@ void Defuzzyfier::defuzzify(const ComposedActions& in, std::vector<double>& valu
           has[static_cast<std::size_t>(a)] = 1;
         }
       } else {
-        scratch_angles_.clear();
-        scratch_weights_.clear();
+        // Weighted circular mean (as mrt::common::circular_mean), computed
+        // here so that the cycle neither allocates nor throws: when the
+        // weighted unit vectors cancel out there is no command.
+        double s = 0.0, c = 0.0, w = 0.0;
         for (int l = 0; l < labels; ++l) {
-          if (!in.present(a, l) || !(in.get(a, l) > 0.0)) continue;
-          scratch_angles_.push_back(mrt::common::deg_to_rad(singleton_point(a, l)));
-          scratch_weights_.push_back(in.get(a, l));
+          if (!in.present(a, l)) continue;
+          const double mu = in.get(a, l);
+          if (!(mu > 0.0)) continue;
+          const double rad = mrt::common::deg_to_rad(singleton_point(a, l));
+          s += mu * std::sin(rad);
+          c += mu * std::cos(rad);
+          w += mu;
         }
-        if (scratch_angles_.empty()) continue;
-        try {
-          double deg = mrt::common::rad_to_deg(mrt::common::circular_mean(scratch_angles_, scratch_weights_));
-          if (deg < 0.0) deg += 360.0;
-          value[static_cast<std::size_t>(a)] = deg;
-          has[static_cast<std::size_t>(a)] = 1;
-        } catch (const std::invalid_argument&) {
-          // opposite angles cancel out: no command
-        }
+        if (!(w > 0.0) || std::hypot(s, c) <= 1e-12 * w) continue;
+        double deg = mrt::common::rad_to_deg(mrt::common::normalize_angle(std::atan2(s, c)));
+        if (deg < 0.0) deg += 360.0;
+        if (deg >= 360.0) deg -= 360.0;
+        value[static_cast<std::size_t>(a)] = deg;
+        has[static_cast<std::size_t>(a)] = 1;
       }
       continue;
     }

@@ -129,9 +129,14 @@ std::string read_text_file(const std::string& path) {
   // anything that would not fit a rule base.
   constexpr std::uintmax_t kMaxBytes = 64u << 20;
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw ParseError(path, 0, 0, "cannot open file");
-  if (!std::filesystem::is_regular_file(path, ec)) throw ParseError(path, 0, 0, "not a regular file");
-  if (std::filesystem::file_size(path, ec) > kMaxBytes) throw ParseError(path, 0, 0, "file larger than 64 MiB");
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(st))
+    throw ParseError(path, 0, 0, ec && ec != std::errc::no_such_file_or_directory ? "cannot open file: " + ec.message()
+                                                                               : std::string("cannot open file"));
+  if (!std::filesystem::is_regular_file(st)) throw ParseError(path, 0, 0, "not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw ParseError(path, 0, 0, "cannot open file: " + ec.message());
+  if (size > kMaxBytes) throw ParseError(path, 0, 0, "file larger than 64 MiB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(path, 0, 0, "cannot open file");
   std::ostringstream ss;

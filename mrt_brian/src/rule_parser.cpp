@@ -20,7 +20,8 @@ std::vector<RuleDef> parse_rules(const std::string& text, const std::string& fil
     while (ts.peek().kind == Token::kOpen) {
       if (!r.actions.empty() && !(ts.peek(1).kind == Token::kWord && ts.peek(2).kind == Token::kWord &&
                                   ts.peek(3).kind == Token::kClose))
-        ts.fail(ts.peek(), "expected ';' after rule, got " + describe(ts.peek()));
+        ts.fail(ts.peek(), "expected ';' after rule (rule starting at line " + std::to_string(r.start_line) +
+                               "), got " + describe(ts.peek()));
       ts.next();
       ActionDef a;
       const Token& name = ts.expect_word("an action name");
@@ -43,7 +44,8 @@ std::vector<RuleDef> parse_rules(const std::string& text, const std::string& fil
       ts.fail(ts.peek(), "expected '(' of an action after '=>', got " + describe(ts.peek()));
     const Token& semi = ts.peek();
     if (semi.kind != Token::kSemicolon)
-      ts.fail(semi, "expected ';' after rule, got " + describe(semi));
+      ts.fail(semi, "expected ';' after rule (rule starting at line " + std::to_string(r.start_line) + "), got " +
+                        describe(semi));
     r.line = semi.line;
     ts.next();
     out.push_back(std::move(r));

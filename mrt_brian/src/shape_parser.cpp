@@ -6,7 +6,7 @@
 namespace mrt::brian {
 
 std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& file) {
-  TokenStream ts(tokenize(text), file);
+  TokenStream ts(tokenize(text, true, false), file);  // no #( ... ; block comments here
   std::vector<ShapeDef> out;
   while (!ts.at_end()) {
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
@@ -39,7 +39,7 @@ std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& f
 }
 
 std::vector<AssociationDef> parse_associations(const std::string& text, const std::string& file) {
-  TokenStream ts(tokenize(text), file);
+  TokenStream ts(tokenize(text, true, false), file);  // no #( ... ; block comments here
   std::vector<AssociationDef> out;
   while (!ts.at_end()) {
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }

@@ -49,6 +49,15 @@ class CheckerTest : public ::testing::Test {
     EXPECT_NE(d[0].message.find(what), std::string::npos) << d[0].str();
     EXPECT_EQ(run_tool(dir_.string()), 1);
   }
+  // Exactly one diagnostic: `file`:`line`: `message`, word for word.
+  void expect_exactly(const std::string& file, int line, const std::string& message) {
+    const auto d = Checker().check_path(dir_.string());
+    ASSERT_EQ(d.size(), 1u) << (d.empty() ? "none" : d[0].str() + (d.size() > 1 ? " / " + d[1].str() : ""));
+    EXPECT_EQ(fs::path(d[0].file).lexically_relative(dir_).string(), file) << d[0].str();
+    EXPECT_EQ(d[0].line, line) << d[0].str();
+    EXPECT_EQ(d[0].message, message);
+    EXPECT_EQ(run_tool(dir_.string()), 1);
+  }
   static int run_tool(const std::string& arg) {
     const std::string cmd = std::string(MRT_BRIAN_CHECK) + " " + arg + " >/dev/null 2>&1";
     const int rc = std::system(cmd.c_str());
@@ -80,36 +89,64 @@ TEST_F(CheckerTest, ListFileResolvesFromItsDirectory) {
 
 TEST_F(CheckerTest, RuleWithoutSemicolon) {
   write(dir_ / "behaviors/cruise.rul", "# cruise\n(ObstacleFar) => (Speed FAST)\n(ObstacleNear) => (Speed SLOW);\n");
-  expect_one("behaviors/cruise.rul", 3, "expected ';' after rule");
+  expect_exactly("behaviors/cruise.rul", 3, "expected ';' after rule (rule starting at line 2), got '('");
 }
 
+// A file that does not parse is reported once: what depends on it (here the
+// data associated with shape DIST) is not reported again.
 TEST_F(CheckerTest, UnknownFuzzySetType) {
   write(dir_ / "shape_ctof.txt", "(DIST (TOL (NEAR 0 100))\n (TOX (FAR 0 100)))\n(SP (TOL (SLOW 10 30)) (TOR (FAST 10 30)))\n");
-  const auto d = Checker().check_path(dir_.string());
-  ASSERT_FALSE(d.empty());
-  EXPECT_EQ(fs::path(d[0].file).filename(), "shape_ctof.txt");
-  EXPECT_EQ(d[0].line, 2);
-  EXPECT_NE(d[0].message.find("unknown fuzzy set type"), std::string::npos);
-  EXPECT_EQ(run_tool(dir_.string()), 1);
+  expect_exactly("shape_ctof.txt", 2, "unknown fuzzy set type 'TOX' (expected TRI TOL TOR DIV TRA REC SNG)");
 }
 
+// The labels of a datum whose shape is unknown are not reported again.
 TEST_F(CheckerTest, UnknownShape) {
   write(dir_ / "ctof.txt", "(Obstacle DIST)\n(ProposedSpeed SPX)\n");
-  const auto d = Checker().check_path(dir_.string());
-  ASSERT_GE(d.size(), 1u);
-  EXPECT_EQ(fs::path(d[0].file).filename(), "ctof.txt");
-  EXPECT_EQ(d[0].line, 2);
-  EXPECT_NE(d[0].message.find("unknown shape 'SPX'"), std::string::npos);
-  EXPECT_EQ(run_tool(dir_.string()), 1);
+  expect_exactly("ctof.txt", 2, "unknown shape 'SPX' for datum 'ProposedSpeed'");
 }
 
 TEST_F(CheckerTest, UnknownOutputShape) {
   write(dir_ / "s_ftoc.txt", "\n(Speed SPEED)\n");
-  const auto d = Checker().check_path(dir_.string());
-  ASSERT_GE(d.size(), 1u);
-  EXPECT_EQ(fs::path(d[0].file).filename(), "s_ftoc.txt");
-  EXPECT_EQ(d[0].line, 2);
-  EXPECT_EQ(run_tool(dir_.string()), 1);
+  expect_exactly("s_ftoc.txt", 2, "unknown shape 'SPEED' for action 'Speed'");
+}
+
+// Duplicate definitions, one per kind of file.
+TEST_F(CheckerTest, ShapeDefinedTwice) {
+  write(dir_ / "s_shape.txt", "(SPD (SNG (STOP 0)) (SNG (SLOW 10)) (SNG (FAST 30)))\n(SPD (SNG (STOP 0)))\n");
+  expect_exactly("s_shape.txt", 2, "shape 'SPD' defined twice");
+}
+
+TEST_F(CheckerTest, LabelDefinedTwiceInAShape) {
+  write(dir_ / "shape_ctof.txt",
+        "(DIST (TOL (NEAR 0 100))\n (TOR (FAR 0 100))\n (TOR (NEAR 50 60)))\n(SP (TOL (SLOW 10 30)) (TOR (FAST 10 30)))\n");
+  expect_exactly("shape_ctof.txt", 3, "label 'NEAR' defined twice in shape 'DIST'");
+}
+
+TEST_F(CheckerTest, DatumAssociatedTwice) {
+  write(dir_ / "ctof.txt", "(Obstacle DIST)\n(ProposedSpeed SP)\n(Obstacle DIST)\n");
+  expect_exactly("ctof.txt", 3, "datum 'Obstacle' associated twice (first at line 1)");
+}
+
+TEST_F(CheckerTest, PredicateDefinedTwice) {
+  write(dir_ / "PredicateActions.ini", "GoingFast = (D ProposedSpeed FAST);\nObstacleFar = (D ProposedSpeed SLOW);\n");
+  expect_exactly("PredicateActions.ini", 2,
+                 "predicate 'ObstacleFar' defined twice (first at " + (dir_ / "Predicate.ini").string() + ":2)");
+}
+
+TEST_F(CheckerTest, BehaviourListedTwice) {
+  write(dir_ / "behavior.txt",
+        "(level 1 Cruise behaviors/cruise.rul)\n(level 2 Brake behaviors/brake.rul)\n(level 2 Cruise behaviors/cruise.rul)\n");
+  expect_exactly("behavior.txt", 3, "behaviour 'Cruise' listed twice");
+}
+
+TEST_F(CheckerTest, CandoDefinedTwice) {
+  write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (P ObstacleNear);\nCruise = (P ObstacleNear);\n");
+  expect_exactly("Cando.ini", 3, "CANDO of 'Cruise' defined twice");
+}
+
+TEST_F(CheckerTest, WantDefinedTwice) {
+  write(dir_ / "want.txt", "Cruise = (NOT (P ObstacleNear));\nBrake = (P ObstacleNear);\n\nBrake = (P ObstacleFar);\n");
+  expect_exactly("want.txt", 4, "WANT of 'Brake' defined twice");
 }
 
 TEST_F(CheckerTest, UnknownLabel) {

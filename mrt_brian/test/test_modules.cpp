@@ -10,6 +10,8 @@
 
 #include "mrt_brian/behavior_engine.h"
 #include "mrt_brian/brian.h"
+#include "mrt_brian/crisp_input.h"
+#include "mrt_brian/lexer.h"
 #include "mrt_common/parse_error.h"
 
 using namespace mrt::brian;
@@ -231,4 +233,140 @@ TEST(Modules, ClearErrorsWhereTheOriginalCrashed) {
     EXPECT_EQ(fs::path(e.file()).filename(), "Cando.ini");
     EXPECT_EQ(e.line(), 3);
   }
+}
+
+// The legacy WANT filter follows a threshold changed at run time. Obstacle
+// 40 (rel 0.5): CANDO Cruise <0.6,0.5>, Brake <0.6,0.5>; WANT Cruise
+// <0.4,0.5>, Brake <0.6,0.5>. At 0.49 Cruise's WANT fails the composite
+// filter (weight 0) and nothing is commanded (see above). At 0.35 it
+// passes: Cruise FAST 0.4, SLOW 0.6; before Brake, in place x0.4 -> 0.16,
+// 0.24 -> ProposedSpeed (30*0.16 + 10*0.24)/0.4 = 18 -> GoingFast <0.4,1>;
+// Brake: AND(<0.4,1>, <0.6,0.5>) -> STOP 0.4; at the end in place again:
+// FAST 0.064, SLOW 0.096, STOP 0.24 -> (1.92 + 0.96)/0.4 = 7.2.
+TEST(Modules, LegacyThresholdChangedAtRunTimeAppliesToWant) {
+  const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (Speed STOP);\n");
+  BrianOptions opt;
+  opt.profile = Profile::kLegacy;
+  Brian b(ConfigFiles::from_directory(d.string()), opt);
+  EXPECT_TRUE(b.run({{"Obstacle", 40, 0.5}}).empty());
+  b.engine().set_threshold(0.35);
+  EXPECT_DOUBLE_EQ(b.engine().threshold(), 0.35);
+  EXPECT_NEAR(command(b.run({{"Obstacle", 40, 0.5}}), "Speed"), 7.2, 1e-6);
+  opt.threshold = 0.35;  // the same from the start
+  Brian c(ConfigFiles::from_directory(d.string()), opt);
+  EXPECT_NEAR(command(c.run({{"Obstacle", 40, 0.5}}), "Speed"), 7.2, 1e-6);
+  b.engine().set_threshold(0.49);
+  EXPECT_TRUE(b.run({{"Obstacle", 40, 0.5}}).empty());
+}
+
+namespace {
+// Cruise (level 1) proposes all three labels; Brake (level 2) proposes FAST
+// and deletes with `del`.
+const char* kCruise3 = "(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (Speed SLOW);\n(ObstacleNear) => (Speed STOP);\n";
+
+double deleted_speed(Profile p, const std::string& del) {
+  const fs::path d = make_base("(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (&DEL.Speed " + del + ");\n");
+  write(d / "cruise.rul", kCruise3);
+  BrianOptions opt;
+  opt.profile = p;
+  Brian b(ConfigFiles::from_directory(d.string()), opt);
+  return command(b.run({{"Obstacle", 50, 1}}), "Speed");
+}
+}  // namespace
+
+// &DEL with ANY, a label and a *substring. Obstacle 50 (rel 1): NEAR and FAR
+// <0.5,1>; both CANDOs 0.5 and both WANTs 0.5 pass 0.49. Cruise proposes
+// FAST, SLOW, STOP 0.5 each; Brake proposes FAST 0.5, then deletes.
+// Singletons STOP 0, SLOW 10, FAST 30.
+//
+// Manual (value x reliability, weighted once by WANT 0.5, average):
+//   ANY:  Brake's FAST 0.25 only                            -> 30
+//   FAST: SLOW 0.25, STOP 0.25, Brake FAST 0.25             -> (2.5 + 7.5)/0.75 = 13.3333
+//   *ST (STOP and FAST, not SLOW): SLOW 0.25, Brake FAST 0.25 -> (2.5 + 7.5)/0.5 = 20
+// Legacy (value; before Brake the list is weighted in place, x0.5, and once
+// more at the end; max):
+//   ANY:  Brake FAST 0.5 -> 0.25                              -> 30
+//   FAST: SLOW 0.125, STOP 0.125, Brake FAST 0.25             -> (1.25 + 7.5)/0.5 = 17.5
+//   *ST:  SLOW 0.125, Brake FAST 0.25                          -> (1.25 + 7.5)/0.375 = 23.3333
+TEST(Modules, DeleteAnyLabelAndSubstringManual) {
+  EXPECT_NEAR(deleted_speed(Profile::kManual, "ANY"), 30.0, 1e-9);
+  EXPECT_NEAR(deleted_speed(Profile::kManual, "FAST"), 10.0 / 0.75, 1e-9);
+  EXPECT_NEAR(deleted_speed(Profile::kManual, "*ST"), 20.0, 1e-9);
+}
+
+TEST(Modules, DeleteAnyLabelAndSubstringLegacy) {
+  EXPECT_NEAR(deleted_speed(Profile::kLegacy, "ANY"), 30.0, 1e-6);
+  EXPECT_NEAR(deleted_speed(Profile::kLegacy, "FAST"), 17.5, 1e-6);
+  EXPECT_NEAR(deleted_speed(Profile::kLegacy, "*ST"), 8.75 / 0.375, 1e-6);
+}
+
+// &Behaviour.Action.Label in the manual profile: the value the behaviour
+// proposed (max over matches), before WANT weighting. Obstacle 40 (rel 1):
+// NEAR 0.6, FAR 0.4; CANDOs 0.6; WANT Cruise 0.4, Brake 0.6. Cruise: FAST
+// 0.4, SLOW 0.6, STOP 0.6, weighted 0.16, 0.24, 0.24.
+//   (&Cruise.Speed.FAST) = 0.4 -> Brake FAST 0.4 x 0.6 = 0.24; FAST average
+//   (0.16 + 0.24)/2 = 0.2 -> (6 + 2.4)/(0.2 + 0.24 + 0.24) = 12.352941
+//   (&Cruise.Speed.ANY) = 0.6 -> Brake FAST 0.36; FAST 0.26 -> 10.2/0.74 = 13.783784
+//   (&Cruise.Speed.STOP) AND (&Cruise.Speed.FAST) = 0.4 -> as the first.
+// (Were the weighted 0.16 read instead, the first would give 10.263.)
+TEST(Modules, ProposalPredicatesManual) {
+  auto speed = [](const std::string& pre) {
+    const fs::path d = make_base(pre + " => (Speed FAST);\n");
+    write(d / "cruise.rul", kCruise3);
+    Brian b(ConfigFiles::from_directory(d.string()));
+    return command(b.run({{"Obstacle", 40, 1}}), "Speed");
+  };
+  EXPECT_NEAR(speed("(&Cruise.Speed.FAST)"), 8.4 / 0.68, 1e-9);
+  EXPECT_NEAR(speed("(P &Cruise.Speed.FAST)"), 8.4 / 0.68, 1e-9);
+  EXPECT_NEAR(speed("(&Cruise.Speed.ANY)"), 10.2 / 0.74, 1e-9);
+  EXPECT_NEAR(speed("(AND (&Cruise.Speed.STOP) (&Cruise.Speed.FAST))"), 8.4 / 0.68, 1e-9);
+  // A label Cruise did not propose reads 0: Brake does not fire -> (4.8 + 2.4)/0.64.
+  const fs::path d = make_base("(&Cruise.Speed.FAST) => (Speed FAST);\n");
+  write(d / "cruise.rul", "(ObstacleNear) => (Speed SLOW);\n(ObstacleNear) => (Speed STOP);\n");
+  Brian b(ConfigFiles::from_directory(d.string()));
+  EXPECT_NEAR(command(b.run({{"Obstacle", 40, 1}}), "Speed"), 2.4 / 0.48, 1e-9);
+}
+
+// A directory read with the other conventional spellings: behaviour.txt and
+// Want.ini (the IsAac configuration directory itself, whose BrianConfigs.ini
+// names exactly those files) gives the same commands as its list file.
+TEST(Modules, DirectoryWithWantIniAndBehaviourTxt) {
+  const std::string data = MRT_BRIAN_TEST_DATA;
+  const ConfigFiles f = ConfigFiles::from_directory(data + "/isaac/config");
+  EXPECT_EQ(fs::path(f.want).filename(), "Want.ini");
+  EXPECT_EQ(fs::path(f.behaviors).filename(), "behaviour.txt");
+  EXPECT_EQ(fs::path(f.predicate_actions).filename(), "PredicateActions.ini");
+  BrianOptions opt;
+  opt.profile = Profile::kLegacy;
+  Brian dir(f, opt);
+  Brian list(ConfigFiles::from_list_file(data + "/isaac/bin/BrianConfigs.ini"), opt);
+  EXPECT_EQ(dir.engine().size(), 8);
+  const auto inputs = parse_crisp_input(read_text_file(data + "/isaac/input.txt"), "input.txt");
+  ASSERT_GT(inputs.size(), 100u);
+  int commands = 0;
+  for (std::size_t i = 0; i < 100; ++i) {
+    const CommandList a = dir.run(inputs[i]);
+    const CommandList& b = list.run(inputs[i]);
+    ASSERT_EQ(a.size(), b.size()) << "cycle " << i;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].name, b[k].name);
+      EXPECT_EQ(a[k].value, b[k].value) << a[k].name << " cycle " << i;
+    }
+    commands += static_cast<int>(a.size());
+  }
+  EXPECT_GT(commands, 100);
+  // A directory with want.txt and Want.ini both: want.txt wins.
+  const fs::path d = make_base("(ObstacleNear) => (Speed STOP);\n");
+  write(d / "Want.ini", "Cruise = (P ObstacleNear);\n");
+  EXPECT_EQ(fs::path(ConfigFiles::from_directory(d.string()).want).filename(), "want.txt");
+  fs::remove(d / "want.txt");
+  fs::rename(d / "behavior.txt", d / "behaviour.txt");
+  const ConfigFiles g = ConfigFiles::from_directory(d.string());
+  EXPECT_EQ(fs::path(g.want).filename(), "Want.ini");
+  EXPECT_EQ(fs::path(g.behaviors).filename(), "behaviour.txt");
+  // Want.ini: Cruise wants ObstacleNear (0.6), Brake has no WANT (0):
+  // Obstacle 40 (rel 1): Cruise FAST 0.4, SLOW 0.6 x 0.6; Brake's STOP x 0
+  // -> (30*0.24 + 10*0.36)/(0.24 + 0.36 + 0) = 10.8/0.6 = 18.
+  Brian w(g);
+  EXPECT_NEAR(command(w.run({{"Obstacle", 40, 1}}), "Speed"), 18.0, 1e-9);
 }

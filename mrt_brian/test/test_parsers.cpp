@@ -21,6 +21,29 @@ TEST(Parsers, ShapesAndAssociations) {
   EXPECT_EQ(a[2].line, 2);
 }
 
+// Only predicate, CANDO, WANT and rule files have '#( ... ;' block comments:
+// in shape and association files '#(' starts a line comment like any '#',
+// and must not swallow the lines up to the next ';'.
+TEST(Parsers, NoBlockCommentsInShapeAndAssociationFiles) {
+  const auto shapes = parse_shapes(
+      "#(old shape, commented out\n(A (TRI (L 0 1 2)))\n(B (SNG (M 5)));\n(C (REC (N 1 3)))\n", "s_shape.txt");
+  ASSERT_EQ(shapes.size(), 3u);
+  EXPECT_EQ(shapes[0].name, "A");
+  EXPECT_EQ(shapes[0].line, 2);
+  EXPECT_EQ(shapes[1].name, "B");
+  EXPECT_EQ(shapes[2].name, "C");
+  EXPECT_EQ(shapes[2].line, 4);
+  const auto a = parse_associations("#(Speed OLD)\n(Speed SPD)\n(Angle ANG);\n(Turn TRN)\n", "s_ftoc.txt");
+  ASSERT_EQ(a.size(), 3u);
+  EXPECT_EQ(a[0].name, "Speed");
+  EXPECT_EQ(a[0].line, 2);
+  EXPECT_EQ(a[2].name, "Turn");
+  // Predicate files keep them: the block runs to the first ';'.
+  const auto d = parse_definitions("#( X = (D x L);\nY = (D y L);\n", "Predicate.ini");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].name, "Y");
+}
+
 TEST(Parsers, ShapeErrorsNameTheLine) {
   try {
     parse_shapes("(S\n (TRI (A 1 2))\n)", "shape_ctof.txt");

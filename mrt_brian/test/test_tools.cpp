@@ -67,3 +67,34 @@ TEST(BrianRun, BadConfigurationAndUsage) {
   EXPECT_EQ(run_tool("--profile nope " + kData + "/synth " + kData + "/synth/input.txt").rc, 2);
   EXPECT_EQ(run_tool(kData + "/synth").rc, 2);
 }
+
+// A path that cannot even be examined (here a name longer than NAME_MAX:
+// stat fails with ENAMETOOLONG) is a clear error and exit 2, never an
+// uncaught std::filesystem::filesystem_error (abort).
+TEST(BrianRun, UnexaminablePathIsAnErrorNotACrash) {
+  const std::string too_long = fs::temp_directory_path().string() + "/" + std::string(300, 'a');
+  const ToolRun r = run_tool(too_long + " " + kData + "/synth/input.txt");
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find(too_long), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("File name too long"), std::string::npos) << r.err;
+  const ToolRun in = run_tool(kData + "/synth " + too_long);
+  EXPECT_EQ(in.rc, 2);
+  EXPECT_NE(in.err.find(too_long + ": cannot open file: File name too long"), std::string::npos) << in.err;
+  // brian_check: a usage error (the path), exit 2 with the reason.
+  const std::string o = (fs::temp_directory_path() / ("brian_check_err_" + std::to_string(::getpid()))).string();
+  const int rc = std::system((std::string(MRT_BRIAN_CHECK) + " " + too_long + " 2>" + o).c_str());
+  const std::string err = mrt::brian::read_text_file(o);
+  fs::remove(o);
+  EXPECT_EQ(WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, 2);
+  EXPECT_NE(err.find("File name too long"), std::string::npos) << err;
+  // A too-long name inside a list file: "cannot open file" on that name.
+  const fs::path list = fs::temp_directory_path() / ("brian_list_" + std::to_string(::getpid()) + ".ini");
+  const std::string s = kData + "/synth/";
+  std::ofstream(list) << s << "ctof.txt\n" << s << "shape_ctof.txt\n" << s << "Predicate.ini\n" << s
+                      << "PredicateActions.ini\n" << s << "Cando.ini\n" << std::string(300, 'b') << "\n" << s
+                      << "want.txt\n" << s << "s_ftoc.txt\n" << s << "s_shape.txt\n";
+  const ToolRun l = run_tool(list.string() + " " + kData + "/synth/input.txt");
+  fs::remove(list);
+  EXPECT_EQ(l.rc, 2);
+  EXPECT_NE(l.err.find(std::string(300, 'b') + ": cannot open file: File name too long"), std::string::npos) << l.err;
+}

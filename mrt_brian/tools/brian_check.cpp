@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 #include "mrt_brian/checker.h"
 
@@ -12,11 +13,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: brian_check <dir | BrianConfigs.ini>\n");
     return 2;
   }
-  if (!std::filesystem::exists(argv[1])) {
-    std::fprintf(stderr, "brian_check: %s: no such file or directory\n", argv[1]);
+  std::error_code ec;
+  if (!std::filesystem::exists(argv[1], ec)) {
+    std::fprintf(stderr, "brian_check: %s: %s\n", argv[1],
+                 ec ? ec.message().c_str() : "no such file or directory");
     return 2;
   }
-  const auto diags = mrt::brian::Checker().check_path(argv[1]);
-  for (const auto& d : diags) std::printf("%s\n", d.str().c_str());
-  return diags.empty() ? 0 : 1;
+  try {
+    const auto diags = mrt::brian::Checker().check_path(argv[1]);
+    for (const auto& d : diags) std::printf("%s\n", d.str().c_str());
+    return diags.empty() ? 0 : 1;
+  } catch (const std::exception& e) {  // not a finding in the rule base: the tool failed
+    std::fprintf(stderr, "brian_check: %s: %s\n", argv[1], e.what());
+    return 2;
+  }
 }

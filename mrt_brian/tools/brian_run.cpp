@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
   } catch (const mrt::common::ParseError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {  // e.g. std::filesystem::filesystem_error, std::bad_alloc
+    std::fprintf(stderr, "brian_run: %s\n", e.what());
+    return 2;
   }
   return 0;
 }

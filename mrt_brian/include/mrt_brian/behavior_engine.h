@@ -29,9 +29,14 @@ class BehaviorEngine {
   int add(std::unique_ptr<Behavior> b);
   int size() const { return static_cast<int>(behaviors_.size()); }
   const Behavior& behavior(int id) const { return *behaviors_[static_cast<std::size_t>(id)]; }
-  /// Sets the threshold of the default ThresholdFilter (manual §10.4.4).
+  /// Sets the threshold of the default ThresholdFilter (manual §10.4.4);
+  /// the legacy profile's WANT filter follows it too (Brian reads
+  /// threshold() every cycle).
   void set_threshold(double value);
-  void set_filter(std::unique_ptr<CandoFilter> f) { filter_ = std::move(f); }
+  /// The threshold last set (by set_threshold, or of a ThresholdFilter given
+  /// to set_filter); 0.49 by default.
+  double threshold() const { return threshold_; }
+  void set_filter(std::unique_ptr<CandoFilter> f);
   const CandoFilter& filter() const { return *filter_; }
   /// Orders the behaviours (levels ascending, names alphabetically inside a
   /// level). Legacy: the first missing level number ends the hierarchy.
@@ -49,6 +54,7 @@ class BehaviorEngine {
   std::unique_ptr<CandoFilter> filter_;
   std::vector<std::pair<int, std::vector<int>>> schedule_;
   Profile profile_ = Profile::kManual;
+  double threshold_ = 0.49;
 };
 
 }  // namespace mrt::brian

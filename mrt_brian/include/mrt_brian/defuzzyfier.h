@@ -52,12 +52,14 @@ class Defuzzyfier {
  private:
   double singleton_point(int action, int label) const;
   std::vector<Shape> shapes_;
+  // [shape][label]: the outlines barycenter defuzzification clips, built
+  // once (FuzzySet::polygons() allocates).
+  std::vector<std::vector<std::vector<Polygon>>> polygons_;
   SymbolTable actions_;
   std::vector<int> shape_of_;
   std::vector<std::uint8_t> is_angle_;
   DefuzzMethod method_ = DefuzzMethod::kSingleton;
   Profile profile_ = Profile::kManual;
-  mutable std::vector<double> scratch_angles_, scratch_weights_;
 };
 
 }  // namespace mrt::brian
