@@ -52,7 +52,7 @@ if [ "$GUI" -eq 0 ] || [ -z "${DISPLAY:-}" ]; then
   sleep 1
 fi
 
-echo "demo: launching $NAME (logs in $ROS_LOG_DIR)"
+echo "demo: launching $NAME after ${SECONDS} s of setup and build (logs in $ROS_LOG_DIR)"
 roslaunch "$LAUNCH" >"$OUT/roslaunch.log" 2>&1 &
 pids+=($!)
 
@@ -68,7 +68,7 @@ until timeout 30 rostopic echo -n 1 /clock >/dev/null 2>&1; do
   sleep 1
 done
 
-echo "demo: recording at most ${DURATION} s of simulated time"
+echo "demo: simulator up after ${SECONDS} s; recording at most ${DURATION} s of simulated time"
 start=$(date +%s.%N)
 # Left out: /clock (`rosbag play --clock` publishes its own) and the growing
 # ground-truth trails (nav_msgs/Path, derivable from ground_truth).
@@ -104,3 +104,4 @@ fi
 /usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall"
 echo "demo: screenshot $OUT/rviz.png ($colours colours)"
 echo "demo: bag        $OUT/demo.bag"
+echo "demo: done in ${SECONDS} s"
