@@ -5,13 +5,17 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <vector>
 
 #include "mrt_brian/behavior_engine.h"
 #include "mrt_brian/brian.h"
 #include "mrt_brian/crisp_input.h"
 #include "mrt_brian/lexer.h"
+#include "mrt_brian/trace.h"
 #include "mrt_common/parse_error.h"
 
 using namespace mrt::brian;
@@ -369,4 +373,25 @@ TEST(Modules, DirectoryWithWantIniAndBehaviourTxt) {
   // -> (30*0.24 + 10*0.36)/(0.24 + 0.36 + 0) = 10.8/0.6 = 18.
   Brian w(g);
   EXPECT_NEAR(command(w.run({{"Obstacle", 40, 1}}), "Speed"), 18.0, 1e-9);
+}
+
+TEST(CycleTrace, NumbersAreWrittenAsPrintfPercentF) {
+  // The reference traces were written with printf("%f"): every number must
+  // come out with exactly those characters (rounding, -0, nan, inf, huge).
+  const double values[] = {0.0, -0.0, 1.0, 0.5, 64.13, 0.0000005, 0.0000015, -0.34773, 2.5e-7,
+                           123456789.123456789, 1e300, -1.7976931348623157e308, 0.1 + 0.2,
+                           std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()};
+  for (double v : values) {
+    CycleTrace t;
+    t.commands.push_back({"Speed", v});
+    t.rules.push_back({"B", 17, v});
+    const auto lines = t.lines(true);
+    ASSERT_EQ(lines.size(), 2u);
+    std::vector<char> buf(512);
+    std::snprintf(buf.data(), buf.size(), "CMD Speed %f", v);
+    EXPECT_EQ(lines[0], std::string(buf.data())) << v;
+    std::snprintf(buf.data(), buf.size(), "RULE B 17 %f", v);
+    EXPECT_EQ(lines[1], std::string(buf.data())) << v;
+  }
 }

@@ -24,7 +24,18 @@ struct CycleTrace {
   std::vector<Act> actions;
   CommandList commands;
 
-  void clear() { *this = CycleTrace(); }
+  /// Empties every list, keeping their storage for the next cycle.
+  void clear() {
+    crisp.clear();
+    fuzzy.clear();
+    predicates.clear();
+    cando.clear();
+    want.clear();
+    rules.clear();
+    proposals.clear();
+    actions.clear();
+    commands.clear();
+  }
   /// Sorted lines: CMD only, or with `full` also CRISP FUZZY PRED CANDO WANT
   /// RULE PACT ACT.
   std::vector<std::string> lines(bool full) const;
