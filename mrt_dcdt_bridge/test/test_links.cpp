@@ -146,15 +146,20 @@ TEST(Links, UdpWarrantiesNoneLosesRetransmitRecovers) {
   b.GetPostOffice().Unregister(&box);
 }
 
-// Copies bytes between two pty masters: a null-modem cable.
+// Copies bytes between two pty masters: a null-modem cable. With `one_in`
+// > 0 it flips a bit of each byte, in either direction, with probability
+// 1/`one_in` (a fixed seed, so a run is reproducible). Masters are
+// non-blocking and each direction is buffered, so neither side can stall
+// the other.
 class NullModem {
  public:
-  NullModem() {
+  explicit NullModem(int one_in = 0) : one_in_(one_in) {
     char n1[64], n2[64];
     termios t{};
     cfmakeraw(&t);
-    ok = openpty(&m1_, &s1_, n1, &t, nullptr) == 0 && openpty(&m2_, &s2_, n2, &t, nullptr) == 0;
+    ok = openpty(&m_[0], &s1_, n1, &t, nullptr) == 0 && openpty(&m_[1], &s2_, n2, &t, nullptr) == 0;
     if (ok) {
+      for (int fd : m_) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
       dev1 = n1;
       dev2 = n2;
       thread_ = std::thread([this] { Loop(); });
@@ -163,28 +168,48 @@ class NullModem {
   ~NullModem() {
     stop_ = true;
     if (thread_.joinable()) thread_.join();
-    for (int fd : {m1_, s1_, m2_, s2_})
+    for (int fd : {m_[0], s1_, m_[1], s2_})
       if (fd >= 0) ::close(fd);
   }
   bool ok = false;
   std::string dev1, dev2;
+  std::atomic<uint64_t> flipped{0}, relayed{0};
 
  private:
   void Loop() {
-    char buf[4096];
+    std::mt19937 rng(12345);
+    std::uniform_int_distribution<int> hit(0, one_in_ > 0 ? one_in_ - 1 : 0), bit(0, 7);
+    std::vector<uint8_t> pend[2];  // bytes read from m_[k], to be written to m_[1-k]
+    uint8_t buf[4096];
     while (!stop_) {
-      pollfd p[2] = {{m1_, POLLIN, 0}, {m2_, POLLIN, 0}};
+      pollfd p[2];
+      for (int k = 0; k < 2; ++k) {
+        p[k] = {m_[k], static_cast<short>(POLLIN | (pend[1 - k].empty() ? 0 : POLLOUT)), 0};
+      }
       if (::poll(p, 2, 20) <= 0) continue;
       for (int k = 0; k < 2; ++k) {
-        if (!(p[k].revents & POLLIN)) continue;
-        ssize_t r = ::read(p[k].fd, buf, sizeof buf);
-        if (r > 0) {
-          [[maybe_unused]] ssize_t w = ::write(k == 0 ? m2_ : m1_, buf, static_cast<size_t>(r));
+        if (p[k].revents & POLLIN) {
+          ssize_t r = ::read(m_[k], buf, sizeof buf);
+          for (ssize_t i = 0; i < r; ++i) {
+            uint8_t b = buf[i];
+            if (one_in_ > 0 && hit(rng) == 0) {
+              b ^= static_cast<uint8_t>(1u << bit(rng));
+              ++flipped;
+            }
+            pend[k].push_back(b);
+          }
+          if (r > 0) relayed += static_cast<uint64_t>(r);
+        }
+        if ((p[k].revents & POLLOUT) && !pend[1 - k].empty()) {
+          auto& q = pend[1 - k];
+          ssize_t w = ::write(m_[k], q.data(), q.size());
+          if (w > 0) q.erase(q.begin(), q.begin() + w);
         }
       }
     }
   }
-  int m1_ = -1, s1_ = -1, m2_ = -1, s2_ = -1;
+  int one_in_;
+  int m_[2] = {-1, -1}, s1_ = -1, s2_ = -1;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
@@ -218,77 +243,10 @@ TEST(Links, SerialLinkOverPseudoTerminals) {
   b.GetPostOffice().Unregister(&box);
 }
 
-// A null modem that flips bits: each byte, in either direction, is hit with
-// probability 1/`one_in` (a fixed seed, so a run is reproducible). Masters
-// are non-blocking and each direction is buffered, so neither side can stall
-// the other.
-class NoisyNullModem {
- public:
-  explicit NoisyNullModem(int one_in) : one_in_(one_in) {
-    char n1[64], n2[64];
-    termios t{};
-    cfmakeraw(&t);
-    ok = openpty(&m_[0], &s1_, n1, &t, nullptr) == 0 && openpty(&m_[1], &s2_, n2, &t, nullptr) == 0;
-    if (ok) {
-      for (int fd : m_) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
-      dev1 = n1;
-      dev2 = n2;
-      thread_ = std::thread([this] { Loop(); });
-    }
-  }
-  ~NoisyNullModem() {
-    stop_ = true;
-    if (thread_.joinable()) thread_.join();
-    for (int fd : {m_[0], s1_, m_[1], s2_})
-      if (fd >= 0) ::close(fd);
-  }
-  bool ok = false;
-  std::string dev1, dev2;
-  std::atomic<uint64_t> flipped{0}, relayed{0};
-
- private:
-  void Loop() {
-    std::mt19937 rng(12345);
-    std::uniform_int_distribution<int> hit(0, one_in_ - 1), bit(0, 7);
-    std::vector<uint8_t> pend[2];  // bytes read from m_[k], to be written to m_[1-k]
-    uint8_t buf[4096];
-    while (!stop_) {
-      pollfd p[2];
-      for (int k = 0; k < 2; ++k) {
-        p[k] = {m_[k], static_cast<short>(POLLIN | (pend[1 - k].empty() ? 0 : POLLOUT)), 0};
-      }
-      if (::poll(p, 2, 20) <= 0) continue;
-      for (int k = 0; k < 2; ++k) {
-        if (p[k].revents & POLLIN) {
-          ssize_t r = ::read(m_[k], buf, sizeof buf);
-          for (ssize_t i = 0; i < r; ++i) {
-            uint8_t b = buf[i];
-            if (hit(rng) == 0) {
-              b ^= static_cast<uint8_t>(1u << bit(rng));
-              ++flipped;
-            }
-            pend[k].push_back(b);
-          }
-          if (r > 0) relayed += static_cast<uint64_t>(r);
-        }
-        if ((p[k].revents & POLLOUT) && !pend[1 - k].empty()) {
-          auto& q = pend[1 - k];
-          ssize_t w = ::write(m_[k], q.data(), q.size());
-          if (w > 0) q.erase(q.begin(), q.begin() + w);
-        }
-      }
-    }
-  }
-  int one_in_;
-  int m_[2] = {-1, -1}, s1_ = -1, s2_ = -1;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
-};
-
 TEST(Links, GuaranteedOverACorruptingSerialLineArriveOnceInOrder) {
   // ~1 byte in 1500 flipped both ways: with 70-byte frames about one MSG in
   // 20 and some HELLO/ACK/NACK frames are hit (CRC errors, lengths too).
-  NoisyNullModem cable(1500);
+  NullModem cable(1500);
   if (!cable.ok) GTEST_SKIP() << "no pseudo-terminals available";
   AgoraOptions oa = NetOptions("ser link 0 " + cable.dev1 + "\n"), ob = NetOptions("ser link 0 " + cable.dev2 + "\n");
   oa.channel.stream_resend_ms = ob.channel.stream_resend_ms = 100;
