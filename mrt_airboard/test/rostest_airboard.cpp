@@ -27,10 +27,13 @@
 #include <vector>
 
 #include "mrt_common/pose2d.h"
+#include "mrt_common_ros/rostest_helpers.h"
 
 using mrt::common::Pose2D;
 
 namespace {
+
+using mrt::ros_common::wait_for;
 
 // The emulator as a child process of the test (reconnect.test): started with
 // fork/exec on the node's port path, always stopped by the destructor.
@@ -107,16 +110,6 @@ class Airboard : public ::testing::Test {
     if (pnh_.getParam("start_emulator", emu_link_)) emu_.start(emu_link_);
     // Wait for the node to be connected to the emulator.
     ASSERT_TRUE(wait_for([&] { return connected_; }, 20.0)) << "airboard_node never connected to the emulator";
-  }
-
-  template <typename Pred>
-  bool wait_for(Pred pred, double seconds) {
-    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-    while (ros::ok() && ros::WallTime::now() < end && !pred()) {
-      ros::spinOnce();
-      ros::WallDuration(0.01).sleep();
-    }
-    return pred();
   }
 
   // Publishes the twist at 50 Hz for `seconds` of wall time.

@@ -14,18 +14,11 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/rostest_helpers.h"
+
 namespace {
 
-template <class Pred>
-bool wait_for(Pred p, double s) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(s);
-  while (ros::WallTime::now() < end) {
-    ros::spinOnce();
-    if (p()) return true;
-    ros::WallDuration(0.005).sleep();
-  }
-  return false;
-}
+using mrt::ros_common::wait_for;
 
 TEST(MiceOdometryNode, HandComputedReadings) {
   ros::NodeHandle nh;

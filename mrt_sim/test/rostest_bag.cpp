@@ -30,9 +30,13 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "mrt_common_ros/rostest_helpers.h"
+
 extern char** environ;
 
 namespace {
+
+using mrt::ros_common::wait_for;
 
 double yaw_of(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
@@ -159,25 +163,17 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>(ns_ + "cmd_vel", 10);
 
   // Wait for the simulator.
-  ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
-  while (ros::ok() && ros::WallTime::now() < give_up &&
-         (gt.empty() || cmd_pub.getNumSubscribers() == 0 || s1.getNumPublishers() == 0 ||
-          s2.getNumPublishers() == 0)) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
+  wait_for([&] {
+    return !gt.empty() && cmd_pub.getNumSubscribers() > 0 && s1.getNumPublishers() > 0 && s2.getNumPublishers() > 0;
+  }, 30.0);
   ASSERT_FALSE(gt.empty()) << "no ground truth from sim_node";
   ASSERT_GT(cmd_pub.getNumSubscribers(), 0u);
 
   // Record with rosbag, from when it has subscribed to both topics.
   const pid_t rec = spawn({"rosbag", "record", "--quiet", "-O", bag_path_, ns_ + "mice", ns_ + "percepts"});
   ASSERT_GT(rec, 0) << "cannot start rosbag record";
-  give_up = ros::WallTime::now() + ros::WallDuration(30.0);
-  while (ros::ok() && ros::WallTime::now() < give_up &&
-         (other_subscribers(ns_ + "mice") == 0 || other_subscribers(ns_ + "percepts") == 0)) {
-    ros::spinOnce();
-    ros::WallDuration(0.05).sleep();
-  }
+  wait_for([&] { return other_subscribers(ns_ + "mice") > 0 && other_subscribers(ns_ + "percepts") > 0; }, 30.0,
+           0.05);
   ASSERT_GT(other_subscribers(ns_ + "percepts"), 0) << "rosbag record did not subscribe";
   ros::WallDuration(0.5).sleep();  // let its connections come up
 
@@ -185,7 +181,7 @@ TEST_F(BagTest, RecordReplayAndCheck) {
   geometry_msgs::Twist cmd;
   cmd.linear.x = speed_;
   const double t_begin = gt.back().header.stamp.toSec();
-  give_up = ros::WallTime::now() + ros::WallDuration(60.0);
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(60.0);
   ros::WallTime next_cmd = ros::WallTime::now();
   while (ros::ok() && ros::WallTime::now() < give_up &&
          gt.back().header.stamp.toSec() < t_begin + duration_ + 1.0) {
@@ -243,12 +239,7 @@ TEST_F(BagTest, RecordReplayAndCheck) {
                             ns_ + "mice:=/replay/mice", ns_ + "percepts:=/replay/percepts"});
   ASSERT_GT(play, 0) << "cannot start rosbag play";
   ASSERT_EQ(wait_child(play, 60.0), 0) << "rosbag play failed or did not finish";
-  const ros::WallTime settle = ros::WallTime::now() + ros::WallDuration(2.0);
-  while (ros::WallTime::now() < settle &&
-         (replay_mice.size() < mice.size() || replay_percepts.size() < percepts.size())) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
+  wait_for([&] { return replay_mice.size() >= mice.size() && replay_percepts.size() >= percepts.size(); }, 2.0);
   ASSERT_EQ(replay_mice.size(), mice.size());
   ASSERT_EQ(replay_percepts.size(), percepts.size());
   for (std::size_t i = 0; i < mice.size(); ++i) EXPECT_TRUE(same(replay_mice[i], mice[i])) << "mice #" << i;
