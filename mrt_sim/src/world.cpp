@@ -204,7 +204,7 @@ class Loader : private mrt::common::YamlReader {
     return r;
   }
 
-  void overrides(const Node& n, BaseGeometry& g) const {
+  void overrides(const Node& n, BaseConfig& g) const {
     const bool diff = g.type == BaseType::kDifferential;
     if (diff)
       map(n, "base_overrides", {"wheel_radius", "track", "max_wheel_speed", "body_radius"});
@@ -212,7 +212,7 @@ class Loader : private mrt::common::YamlReader {
       map(n, "base_overrides", {"wheel_radius", "omni_radius", "wheel_angles", "max_wheel_speed", "body_radius"});
     g.wheel_radius = positive(n, "wheel_radius", g.wheel_radius);
     g.track = positive(n, "track", g.track);
-    g.omni_radius = positive(n, "omni_radius", g.omni_radius);
+    g.wheel_distance = positive(n, "omni_radius", g.wheel_distance);
     g.max_wheel_speed = positive(n, "max_wheel_speed", g.max_wheel_speed);
     g.body_radius = positive(n, "body_radius", g.body_radius);
     if (const Node a = n["wheel_angles"]) {
@@ -228,7 +228,7 @@ class Loader : private mrt::common::YamlReader {
     }
   }
 
-  SensorsConfig sensors(const Node& n, const BaseGeometry& base) const {
+  SensorsConfig sensors(const Node& n, const BaseConfig& base) const {
     SensorsConfig s;
     s.rate_mice = s.rate_encoders = s.rate_sonar = s.rate_vision = s.rate_dgps = 0.0;
     if (!n) return s;
@@ -287,7 +287,7 @@ class Loader : private mrt::common::YamlReader {
     return s;
   }
 
-  void sonar(const Node& n, const BaseGeometry& base, SensorsConfig& s) const {
+  void sonar(const Node& n, const BaseConfig& base, SensorsConfig& s) const {
     map(n, "sonar", {"rate", "noise", "count", "mounts", "fov", "min_range", "max_range"});
     s.rate_sonar = non_negative(n, "rate", 10.0);
     s.sonar_noise = non_negative(n, "noise", s.sonar_noise);

@@ -30,7 +30,7 @@ void run(Simulator& sim, double seconds) {
 TEST(Kinematics, DifferentialWheelSpeedsByHand) {
   // ianus3: r = 0.05, track = 0.38. v = 0.5, omega = 0.25:
   // left = (0.5 - 0.25 * 0.19) / 0.05 = 9.05, right = (0.5 + 0.0475) / 0.05 = 10.95 rad/s.
-  const BaseGeometry g = base_preset("ianus3");
+  const BaseConfig g = base_preset("ianus3");
   const auto w = twist_to_wheels(g, {0.5, 0.0, 0.25});
   ASSERT_EQ(w.size(), 2u);
   EXPECT_NEAR(w[0], 9.05, 1e-12);
@@ -99,7 +99,7 @@ TEST(Kinematics, OmniArcWithSidewaysComponentMatchesClosedForm) {
 TEST(Kinematics, RoundTripTwistWheelsTwist) {
   const Twist2D t{0.3, -0.2, 0.7};
   for (const char* name : {"ianus3", "p3at", "triskar", "omni4"}) {
-    const BaseGeometry g = base_preset(name);
+    const BaseConfig g = base_preset(name);
     const Twist2D back = wheels_to_twist(g, twist_to_wheels(g, t));
     EXPECT_NEAR(back.vx, t.vx, 1e-12) << name;
     // A differential base cannot move sideways: vy is dropped.
@@ -122,7 +122,7 @@ TEST(Kinematics, Omni4InconsistentWheelsLeastSquares) {
 TEST(Kinematics, SaturationPreservesDirection) {
   // v = 2, omega = 1 on ianus3: wheels (2 -+ 0.19) / 0.05 = 36.2, 43.8 rad/s;
   // max 24, so everything is scaled by 24 / 43.8.
-  const BaseGeometry g = base_preset("ianus3");
+  const BaseConfig g = base_preset("ianus3");
   auto w = twist_to_wheels(g, {2.0, 0.0, 1.0});
   const double k = saturate_wheels(g, w);
   EXPECT_NEAR(k, 24.0 / 43.8, 1e-12);
