@@ -253,8 +253,12 @@ void BoardSession::control(double now) {
     request_stream();
   if (!info_ok_) return poll_info();
   const bool fresh = source_ != Source::kNone && now - last_cmd_ <= o_.cmd_timeout;
+  // While the board reports it stopped, each command is the first step of
+  // the ramp at the nominal period, so repeated ones are identical.
+  const double dt = last_control_ > 0.0 && !limiter_.board_stopped() ? now - last_control_ : 1.0 / o_.rate;
+  last_control_ = now;
   if (fresh && source_ == Source::kWheelPwm) return send_pwm();
-  send_speed(fresh, now);
+  send_speed(fresh, dt);
 }
 
 // Until the board identified itself as matching the base, keep asking and
@@ -289,11 +293,7 @@ void BoardSession::send_pwm() {
   ++stats_.commands_sent;
 }
 
-void BoardSession::send_speed(bool fresh, double now) {
-  // While the board reports it stopped, each command is the first step of
-  // the ramp at the nominal period, so repeated ones are identical.
-  const double dt = last_control_ > 0.0 && !limiter_.board_stopped() ? now - last_control_ : 1.0 / o_.rate;
-  last_control_ = now;
+void BoardSession::send_speed(bool fresh, double dt) {
   std::vector<double> w;
   if (fresh && source_ == Source::kWheelSpeed) {
     w = wheel_cmd_;

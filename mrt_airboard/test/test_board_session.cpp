@@ -3,6 +3,7 @@
 // period every 20 ms (50 Hz), as airboard_node's timers do.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -299,6 +300,27 @@ TEST(BoardSession, ArbitratesBetweenTheCommandSources) {
   f.run(600);
   EXPECT_EQ(f.bench.fw.setpoint(0), 0.0);
   EXPECT_EQ(f.bench.fw.setpoint(1), 0.0);
+}
+
+TEST(BoardSession, TwistAfterPwmRampsFromTheMeasuredSpeeds) {
+  SessionOptions o = options();
+  o.base.max_wheel_accel = 100.0;  // rad/s^2: 2 rad/s per 20 ms control period
+  Fixture f(o);
+  f.run(300);
+  ASSERT_TRUE(f.session.command_wheels(BoardSession::WheelMode::kPwm, {0.5, 0.5}, f.now()));
+  f.run(700);  // ends on the control period at 1.0 s, after that ms's read
+  // Half duty: about 0.5 x 38 = 19 rad/s measured on each wheel.
+  const double m0 = f.session.last_state().motors[0].speed, m1 = f.session.last_state().motors[1].speed;
+  ASSERT_GT(m0, 10.0);
+  ASSERT_GT(m1, 10.0);
+  // Stop by twist: the ramp starts from the speeds measured at the last PWM
+  // period, one step (2 rad/s on the faster wheel, the change vector
+  // scaled as a whole) per period: w_i = m_i (1 - 2 / max(m0, m1)).
+  ASSERT_TRUE(f.session.command_twist(Twist2D{}, f.now()));
+  f.run(20);
+  const double k = 1.0 - 2.0 / std::max(m0, m1);
+  EXPECT_NEAR(f.bench.fw.setpoint(0), m0 * k, 1e-3);  // the wire's quantum: 1 mrad/s
+  EXPECT_NEAR(f.bench.fw.setpoint(1), m1 * k, 1e-3);
 }
 
 TEST(BoardSession, NonFiniteAndMalformedInputsAreDroppedAndCounted) {

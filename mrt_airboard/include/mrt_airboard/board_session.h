@@ -167,7 +167,7 @@ class BoardSession {
   uint32_t short_max_gap_ms() const;
   void send(const Frame& f);
   void send_pwm();
-  void send_speed(bool fresh, double now);
+  void send_speed(bool fresh, double dt);
   void poll_info();
   void on_frame(const Frame& f, double now);
   void on_info(const BoardInfo& i);
