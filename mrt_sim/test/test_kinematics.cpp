@@ -149,3 +149,25 @@ TEST(Kinematics, BadInputsThrow) {
   EXPECT_THROW(sim.set_wheel_speeds(0, {1.0, 2.0, 3.0}), std::invalid_argument);
   EXPECT_THROW(sim.robot_index("nobody"), std::out_of_range);
 }
+
+// The simulator's base is the stack's one geometry type plus what the
+// simulator adds: the same preset gives the same geometry as mrt_common's
+// (and so as mrt_airboard's), and the world file's omni_radius is its
+// wheel_distance. omni4 (wheels at 45, 135, 225, 315 deg, r 0.04 m), vy
+// 1 m/s: w_i = cos(a_i) / 0.04 = +-17.6777 rad/s (cos 45 deg = 0.707107).
+TEST(Kinematics, BaseConfigExtendsTheCommonBaseGeometry) {
+  const BaseConfig b = base_preset("omni4");
+  const mrt::common::BaseGeometry& g = b;
+  const mrt::common::BasePreset& want = mrt::common::base_preset("omni4");
+  EXPECT_EQ(g.type, want.geometry.type);
+  EXPECT_EQ(g.wheel_distance, want.geometry.wheel_distance);
+  EXPECT_EQ(g.wheel_angles, want.geometry.wheel_angles);
+  EXPECT_EQ(b.max_wheel_speed, want.max_wheel_speed);
+  EXPECT_EQ(b.body_radius, want.body_radius);
+  const auto w = twist_to_wheels(b, {0.0, 1.0, 0.0});
+  ASSERT_EQ(w.size(), 4u);
+  EXPECT_NEAR(w[0], 17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[1], -17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[2], -17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[3], 17.677669529663689, 1e-9);
+}
