@@ -42,12 +42,8 @@ BaseType parse_base_type(const std::string& s) {
 BaseParams base_preset(const std::string& name) {
   const mrt::common::BasePreset& preset = mrt::common::base_preset(name);
   BaseParams p;
+  static_cast<BaseGeometry&>(p) = preset.geometry;
   p.name = preset.name;
-  p.type = preset.geometry.type;
-  p.wheel_radius = preset.geometry.wheel_radius;
-  p.track = preset.geometry.track;
-  p.wheel_distance = preset.geometry.wheel_distance;
-  p.wheel_angles = preset.geometry.wheel_angles;
   p.max_wheel_speed = preset.max_wheel_speed;
   return p;
 }

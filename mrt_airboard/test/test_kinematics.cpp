@@ -169,3 +169,25 @@ TEST(VelocityLimiter, RestartsTheRampWhenTheBoardStopped) {
   r = lim.update({-1.0, 0.0, 0.0}, 0.01);
   expect_wheels(r.wheels, {1.0, -0.5, -0.5});
 }
+
+// The board's base parameters are the stack's one geometry type plus the
+// board's limits: a preset carries mrt_common's geometry unchanged, and the
+// kinematics of the geometry alone equals the board's. Triskar, vx 1 m/s:
+// w_i = -sin(a_i) / 0.04 = -25, 12.5, 12.5 rad/s (a = 90, 210, 330 deg).
+TEST(BaseParams, ExtendsTheCommonBaseGeometry) {
+  const BaseParams p = base_preset("triskar");
+  const mrt::common::BaseGeometry& g = p;
+  const mrt::common::BaseGeometry& want = mrt::common::base_preset("triskar").geometry;
+  EXPECT_EQ(g.type, want.type);
+  EXPECT_EQ(g.wheel_radius, want.wheel_radius);
+  EXPECT_EQ(g.wheel_distance, want.wheel_distance);
+  EXPECT_EQ(g.wheel_angles, want.wheel_angles);
+  EXPECT_EQ(p.wheel_count(), 3u);
+  const std::vector<double> w = mrt::common::inverse(g, {1.0, 0.0, 0.0});
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_NEAR(w[0], -25.0, 1e-9);
+  EXPECT_NEAR(w[1], 12.5, 1e-9);
+  EXPECT_NEAR(w[2], 12.5, 1e-9);
+  const std::vector<double> board = make_kinematics(p)->inverse({1.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(board[i], w[i]);
+}

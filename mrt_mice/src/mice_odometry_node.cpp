@@ -17,11 +17,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/params.h"
 #include "mrt_mice/mice_io.h"
 #include "mrt_mice/mice_odometry.h"
 
 namespace mrt::mice {
 namespace {
+
+using mrt::ros_common::ParamReader;
 
 struct NodeOptions {
   std::string params_file;  // ~params_file (required)
@@ -37,25 +41,23 @@ struct NodeOptions {
 
 NodeOptions load_options(const ros::NodeHandle& pnh) {
   NodeOptions o;
-  if (!pnh.getParam("params_file", o.params_file) || o.params_file.empty())
-    throw std::invalid_argument("~params_file: required (path of the mice YAML parameter file)");
-  pnh.param("odom_frame", o.odom_frame, o.odom_frame);
-  pnh.param("base_frame", o.base_frame, o.base_frame);
-  pnh.param("frame_prefix", o.frame_prefix, o.frame_prefix);
-  pnh.param("publish_tf", o.publish_tf, o.publish_tf);
-  pnh.param("max_count", o.max_count, o.max_count);
-  pnh.param("stale_timeout", o.stale_timeout, o.stale_timeout);
-  pnh.param("time_jump_reset", o.time_jump_reset, o.time_jump_reset);
-  pnh.param("reduce_errors", o.odometry.reduce_errors, o.odometry.reduce_errors);
-  pnh.param("var_xy_per_m", o.odometry.var_xy_per_m, o.odometry.var_xy_per_m);
-  pnh.param("var_theta_per_rad", o.odometry.var_theta_per_rad, o.odometry.var_theta_per_rad);
-  pnh.param("var_theta_per_m", o.odometry.var_theta_per_m, o.odometry.var_theta_per_m);
-  pnh.param("flagged_gain", o.odometry.flagged_gain, o.odometry.flagged_gain);
-  if (o.max_count <= 0) throw std::invalid_argument("~max_count: must be > 0");
-  if (!(o.stale_timeout > 0.0)) throw std::invalid_argument("~stale_timeout: must be > 0");
-  if (!(o.time_jump_reset > 0.0)) throw std::invalid_argument("~time_jump_reset: must be > 0");
-  if (o.odom_frame.empty()) throw std::invalid_argument("~odom_frame: must not be empty");
-  if (o.base_frame.empty()) throw std::invalid_argument("~base_frame: must not be empty");
+  ParamReader p(pnh);
+  p.require("params_file", o.params_file, "the path of the mice YAML parameter file")
+      .get("odom_frame", o.odom_frame)
+      .get("base_frame", o.base_frame)
+      .get("frame_prefix", o.frame_prefix)
+      .get("publish_tf", o.publish_tf)
+      .get_positive("max_count", o.max_count)
+      .get_positive("stale_timeout", o.stale_timeout)
+      .get_positive("time_jump_reset", o.time_jump_reset)
+      .get("reduce_errors", o.odometry.reduce_errors)
+      .get("var_xy_per_m", o.odometry.var_xy_per_m)
+      .get("var_theta_per_rad", o.odometry.var_theta_per_rad)
+      .get("var_theta_per_m", o.odometry.var_theta_per_m)
+      .get("flagged_gain", o.odometry.flagged_gain);
+  ParamReader::check(!o.params_file.empty(), "params_file", "the path of the mice YAML parameter file");
+  ParamReader::check(!o.odom_frame.empty(), "odom_frame", "a non-empty frame id");
+  ParamReader::check(!o.base_frame.empty(), "base_frame", "a non-empty frame id");
   try {
     o.odometry.validate();
   } catch (const std::invalid_argument& e) {
@@ -129,36 +131,15 @@ class MiceOdometryNode {
   }
 
   void publish(const ros::Time& stamp, const StepResult& r, double dt) {
+    namespace rc = mrt::ros_common;
     const Pose2D& p = odo_.pose();
-    nav_msgs::Odometry o;
-    o.header.stamp = stamp;
-    o.header.frame_id = odom_frame_;
-    o.child_frame_id = base_frame_;
-    o.pose.pose.position.x = p.x;
-    o.pose.pose.position.y = p.y;
-    o.pose.pose.orientation.z = std::sin(p.theta / 2.0);
-    o.pose.pose.orientation.w = std::cos(p.theta / 2.0);
-    const auto& c = odo_.covariance();
+    const double k = dt > 0.0 ? 1.0 / dt : 0.0;
+    nav_msgs::Odometry o = rc::to_odometry(p, r.delta.x * k, r.delta.y * k, r.delta.theta * k, odom_frame_,
+                                           base_frame_, stamp);
     // 6x6 (x, y, z, roll, pitch, yaw); z, roll and pitch are not measured.
-    const int idx[3] = {0, 1, 5};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) o.pose.covariance[idx[i] * 6 + idx[j]] = c[i * 3 + j];
-    o.pose.covariance[2 * 6 + 2] = o.pose.covariance[3 * 6 + 3] = o.pose.covariance[4 * 6 + 4] = 1e6;
-    if (dt > 0.0) {
-      o.twist.twist.linear.x = r.delta.x / dt;
-      o.twist.twist.linear.y = r.delta.y / dt;
-      o.twist.twist.angular.z = r.delta.theta / dt;
-    }
+    rc::set_planar_covariance(odo_.covariance(), o.pose.covariance, 1e6);
     odom_pub_.publish(o);
-    if (tf_) {
-      geometry_msgs::TransformStamped t;
-      t.header = o.header;
-      t.child_frame_id = base_frame_;
-      t.transform.translation.x = p.x;
-      t.transform.translation.y = p.y;
-      t.transform.rotation = o.pose.pose.orientation;
-      tf_->sendTransform(t);
-    }
+    if (tf_) tf_->sendTransform(rc::to_transform(p, odom_frame_, base_frame_, stamp));
     const ErrorStats& s = odo_.stats();
     mrt_msgs::MiceErrorStats e;
     e.header = o.header;
@@ -226,14 +207,10 @@ class MiceOdometryNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "mice_odometry");
-  ros::NodeHandle nh, pnh("~");
-  std::unique_ptr<mrt::mice::MiceOdometryNode> node;
-  try {
-    node = std::make_unique<mrt::mice::MiceOdometryNode>(nh, pnh);
-  } catch (const std::exception& e) {
-    ROS_FATAL("mice_odometry: %s", e.what());
-    return 1;
-  }
-  ros::spin();
-  return 0;
+  return mrt::ros_common::run_node([] {
+    ros::NodeHandle nh, pnh("~");
+    mrt::mice::MiceOdometryNode node(nh, pnh);
+    ros::spin();
+    return 0;
+  });
 }

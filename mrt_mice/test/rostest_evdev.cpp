@@ -16,6 +16,8 @@
 #include <mrt_msgs/MiceReading.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/rostest_helpers.h"
+
 namespace {
 
 std::string dir;
@@ -55,24 +57,8 @@ void event(int fd, int type, int code, int value) {
   ASSERT_EQ(::write(fd, &e, sizeof e), static_cast<ssize_t>(sizeof e));
 }
 
-void spin_for(double s) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(s);
-  while (ros::WallTime::now() < end) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-}
-
-template <class Pred>
-bool wait_for(Pred p, double s) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(s);
-  while (ros::WallTime::now() < end) {
-    ros::spinOnce();
-    if (p()) return true;
-    ros::WallDuration(0.005).sleep();
-  }
-  return false;
-}
+using mrt::ros_common::spin_for;
+using mrt::ros_common::wait_for;
 
 TEST(MiceEvdevNode, PublishesCountsAndReconnects) {
   ros::NodeHandle nh;

@@ -32,8 +32,8 @@ TEST(Params, Parse) {
 }
 
 TEST(Params, ShippedConfigurationsLoad) {
-  // config/mice: side by side (Fig. 4.1) and the staggered example.
-  const std::string dir = std::string(MRT_MICE_TEST_DATA) + "/../../../config/mice/";
+  // mrt_mice/config: side by side (Fig. 4.1) and the staggered example.
+  const std::string dir = std::string(MRT_MICE_CONFIG_DIR) + "/";
   const MiceParams side = load_params(dir + "ianus3.yaml");
   EXPECT_NEAR(side.distance(), 0.2, 1e-12);
   const MiceParams staggered = load_params(dir + "ianus3_staggered.yaml");

@@ -55,7 +55,7 @@ World msl_world(const std::string& path, int n) {
 int main(int argc, char** argv) {
   // Usage: sim_bench [WORLD.yaml [SECONDS_PER_METRIC]], run from the
   // workspace root by default.
-  const std::string path = argc > 1 ? argv[1] : "config/worlds/msl_field.yaml";
+  const std::string path = argc > 1 ? argv[1] : "mrt_sim/worlds/msl_field.yaml";
   const double secs = argc > 2 ? std::stod(argv[2]) : 1.0;
   World world;
   try {
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   }
 
   // Baseline: the kinematic part of a step alone, for one robot.
-  const BaseGeometry g = world.robots[0].base;
+  const BaseConfig g = world.robots[0].base;
   Pose2D pose;
   const double kin = rate(secs, 10000, [&] {
     auto w = twist_to_wheels(g, {0.5, 0.0, 0.25});

@@ -7,29 +7,39 @@
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/params.h"
+
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 
-double positive_param(ros::NodeHandle& pnh, const std::string& name, double fallback) {
-  double v = fallback;
-  pnh.param(name, v, fallback);
-  if (!(v > 0.0) || !std::isfinite(v)) {
-    ROS_FATAL("bad parameter ~%s: must be a finite number > 0, got %g", name.c_str(), v);
-    ros::shutdown();
-    std::exit(1);
-  }
-  return v;
-}
+struct Options {
+  double speed = 0.6;   // ~speed, m/s
+  double radius = 1.5;  // ~radius, m
+  double rate = 20.0;   // ~rate, Hz
+};
+
+int run(const Options& o);
 
 }  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "figure_eight");
-  ros::NodeHandle nh, pnh("~");
-  const double speed = positive_param(pnh, "speed", 0.6);    // m/s
-  const double radius = positive_param(pnh, "radius", 1.5);  // m
-  const double rate = positive_param(pnh, "rate", 20.0);     // Hz
+  return mrt::ros_common::run_node([] {
+    Options o;
+    mrt::ros_common::ParamReader(ros::NodeHandle("~"))
+        .get_positive("speed", o.speed)
+        .get_positive("radius", o.radius)
+        .get_positive("rate", o.rate);
+    return run(o);
+  });
+}
+
+namespace {
+
+int run(const Options& o) {
+  const double speed = o.speed, radius = o.radius, rate = o.rate;
+  ros::NodeHandle nh;
   ros::Publisher pub = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
 
   if (!ros::Time::waitForValid()) return 0;  // the simulator's first /clock
@@ -52,3 +62,5 @@ int main(int argc, char** argv) {
   pub.publish(geometry_msgs::Twist());
   return 0;
 }
+
+}  // namespace

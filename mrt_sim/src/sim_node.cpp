@@ -16,9 +16,11 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "mrt_common/parse_error.h"
+#include "mrt_common_ros/params.h"
 #include "mrt_sim/simulator.h"
 #include "mrt_sim/world.h"
 #include "ros/conversions.h"
+#include "ros/markers.h"
 #include "ros/node_options.h"
 #include "ros/robot_interface.h"
 
@@ -145,36 +147,32 @@ class SimNode {
 int main(int argc, char** argv) {
   using namespace mrt::sim::node;
   ros::init(argc, argv, "sim_node");
-  ros::NodeHandle nh;
-  ros::NodeHandle pnh("~");
-
-  NodeOptions opt;
-  mrt::sim::World world;
-  try {
-    opt = load_node_options(pnh);
-    world = mrt::sim::load_world(opt.world_file);
-  } catch (const ParameterError& e) {
-    ROS_FATAL("bad parameter %s", e.what());
-    return 1;
-  } catch (const mrt::common::ParseError& e) {
-    ROS_FATAL("cannot load world: %s", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    ROS_FATAL("cannot load world %s: %s", opt.world_file.c_str(), e.what());
-    return 2;
-  }
-  if (opt.publish_clock && !ros::Time::isSimTime())
-    ROS_WARN("/use_sim_time is not set: other nodes will not follow the simulated /clock");
-
-  std::unique_ptr<SimNode> node;
-  try {
-    node = std::make_unique<SimNode>(nh, opt, std::move(world));
-  } catch (const std::exception& e) {
-    ROS_FATAL("cannot start the simulation of %s: %s", opt.world_file.c_str(), e.what());
-    return 1;
-  }
-  ROS_INFO("simulating %s at %.0f steps/s, real-time factor %g", opt.world_file.c_str(), opt.rate_hz,
-           opt.real_time_factor);
-  node->run();
-  return 0;
+  // A bad parameter: ParamError, ROS_FATAL and exit 1 (run_node); a world
+  // file that does not load: exit 2.
+  return mrt::ros_common::run_node([]() -> int {
+    ros::NodeHandle nh;
+    const NodeOptions opt = load_node_options(ros::NodeHandle("~"));
+    mrt::sim::World world;
+    try {
+      world = mrt::sim::load_world(opt.world_file);
+    } catch (const mrt::common::ParseError& e) {
+      ROS_FATAL("cannot load world: %s", e.what());
+      return 2;
+    } catch (const std::exception& e) {
+      ROS_FATAL("cannot load world %s: %s", opt.world_file.c_str(), e.what());
+      return 2;
+    }
+    if (opt.publish_clock && !ros::Time::isSimTime())
+      ROS_WARN("/use_sim_time is not set: other nodes will not follow the simulated /clock");
+    std::unique_ptr<SimNode> node;
+    try {
+      node = std::make_unique<SimNode>(nh, opt, std::move(world));
+    } catch (const std::exception& e) {
+      throw std::runtime_error("cannot start the simulation of " + opt.world_file + ": " + e.what());
+    }
+    ROS_INFO("simulating %s at %.0f steps/s, real-time factor %g", opt.world_file.c_str(), opt.rate_hz,
+             opt.real_time_factor);
+    node->run();
+    return 0;
+  });
 }

@@ -146,7 +146,7 @@ void Simulator::step() {
 
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     RobotState& r = robots_[i];
-    const BaseGeometry& g = r.config.base;
+    const BaseConfig& g = r.config.base;
     r.wheel_speed = r.wheel_setpoint;
     r.saturated = saturate_wheels(g, r.wheel_speed) < 1.0;
     const Twist2D t = wheels_to_twist(g, r.wheel_speed);

@@ -19,6 +19,8 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/rostest_helpers.h"
+
 namespace {
 
 struct Pose {
@@ -52,12 +54,8 @@ class ArcTest : public ::testing::Test {
     ws_sub_ = nh_.subscribe("/" + robot_ + "/wheel_state", 1000, &ArcTest::on_ws, this);
     cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("/" + robot_ + "/cmd_vel", 10);
     // Wait for the simulator: ground truth flowing and our command subscribed.
-    const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
-    while (ros::ok() && ros::WallTime::now() < give_up &&
-           (gt_.empty() || cmd_pub_.getNumSubscribers() == 0 || ws_.empty())) {
-      ros::spinOnce();
-      ros::WallDuration(0.01).sleep();
-    }
+    mrt::ros_common::wait_for([&] { return !gt_.empty() && cmd_pub_.getNumSubscribers() > 0 && !ws_.empty(); },
+                              30.0);
     ASSERT_FALSE(gt_.empty()) << "no ground truth from sim_node";
     ASSERT_GT(cmd_pub_.getNumSubscribers(), 0u) << "sim_node does not subscribe to cmd_vel";
   }

@@ -19,6 +19,8 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "mrt_common_ros/rostest_helpers.h"
+
 extern char** environ;
 
 namespace {
@@ -41,12 +43,7 @@ TEST(SimMulti, TwoRobotsInTheirNamespacesFasterThanRealTime) {
   ros::Subscriber s2 = nh.subscribe("/robot2/ground_truth", 100, &Robot::on, &r2);
   ros::Publisher cmd2 = nh.advertise<geometry_msgs::Twist>("/robot2/cmd_vel", 10);
 
-  ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
-  while (ros::ok() && ros::WallTime::now() < give_up &&
-         (r1.count == 0 || r2.count == 0 || cmd2.getNumSubscribers() == 0)) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
+  mrt::ros_common::wait_for([&] { return r1.count > 0 && r2.count > 0 && cmd2.getNumSubscribers() > 0; }, 30.0);
   ASSERT_GT(r1.count, 0) << "no /robot1/ground_truth";
   ASSERT_GT(r2.count, 0) << "no /robot2/ground_truth";
   EXPECT_EQ(r1.last.child_frame_id, "robot1/base_link_truth");

@@ -30,7 +30,7 @@ void run(Simulator& sim, double seconds) {
 TEST(Kinematics, DifferentialWheelSpeedsByHand) {
   // ianus3: r = 0.05, track = 0.38. v = 0.5, omega = 0.25:
   // left = (0.5 - 0.25 * 0.19) / 0.05 = 9.05, right = (0.5 + 0.0475) / 0.05 = 10.95 rad/s.
-  const BaseGeometry g = base_preset("ianus3");
+  const BaseConfig g = base_preset("ianus3");
   const auto w = twist_to_wheels(g, {0.5, 0.0, 0.25});
   ASSERT_EQ(w.size(), 2u);
   EXPECT_NEAR(w[0], 9.05, 1e-12);
@@ -99,7 +99,7 @@ TEST(Kinematics, OmniArcWithSidewaysComponentMatchesClosedForm) {
 TEST(Kinematics, RoundTripTwistWheelsTwist) {
   const Twist2D t{0.3, -0.2, 0.7};
   for (const char* name : {"ianus3", "p3at", "triskar", "omni4"}) {
-    const BaseGeometry g = base_preset(name);
+    const BaseConfig g = base_preset(name);
     const Twist2D back = wheels_to_twist(g, twist_to_wheels(g, t));
     EXPECT_NEAR(back.vx, t.vx, 1e-12) << name;
     // A differential base cannot move sideways: vy is dropped.
@@ -122,7 +122,7 @@ TEST(Kinematics, Omni4InconsistentWheelsLeastSquares) {
 TEST(Kinematics, SaturationPreservesDirection) {
   // v = 2, omega = 1 on ianus3: wheels (2 -+ 0.19) / 0.05 = 36.2, 43.8 rad/s;
   // max 24, so everything is scaled by 24 / 43.8.
-  const BaseGeometry g = base_preset("ianus3");
+  const BaseConfig g = base_preset("ianus3");
   auto w = twist_to_wheels(g, {2.0, 0.0, 1.0});
   const double k = saturate_wheels(g, w);
   EXPECT_NEAR(k, 24.0 / 43.8, 1e-12);
@@ -148,4 +148,26 @@ TEST(Kinematics, BadInputsThrow) {
   Simulator sim = open_field("ianus3");
   EXPECT_THROW(sim.set_wheel_speeds(0, {1.0, 2.0, 3.0}), std::invalid_argument);
   EXPECT_THROW(sim.robot_index("nobody"), std::out_of_range);
+}
+
+// The simulator's base is the stack's one geometry type plus what the
+// simulator adds: the same preset gives the same geometry as mrt_common's
+// (and so as mrt_airboard's), and the world file's omni_radius is its
+// wheel_distance. omni4 (wheels at 45, 135, 225, 315 deg, r 0.04 m), vy
+// 1 m/s: w_i = cos(a_i) / 0.04 = +-17.6777 rad/s (cos 45 deg = 0.707107).
+TEST(Kinematics, BaseConfigExtendsTheCommonBaseGeometry) {
+  const BaseConfig b = base_preset("omni4");
+  const mrt::common::BaseGeometry& g = b;
+  const mrt::common::BasePreset& want = mrt::common::base_preset("omni4");
+  EXPECT_EQ(g.type, want.geometry.type);
+  EXPECT_EQ(g.wheel_distance, want.geometry.wheel_distance);
+  EXPECT_EQ(g.wheel_angles, want.geometry.wheel_angles);
+  EXPECT_EQ(b.max_wheel_speed, want.max_wheel_speed);
+  EXPECT_EQ(b.body_radius, want.body_radius);
+  const auto w = twist_to_wheels(b, {0.0, 1.0, 0.0});
+  ASSERT_EQ(w.size(), 4u);
+  EXPECT_NEAR(w[0], 17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[1], -17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[2], -17.677669529663689, 1e-9);
+  EXPECT_NEAR(w[3], 17.677669529663689, 1e-9);
 }

@@ -20,7 +20,12 @@ using Twist2D = mrt::common::Twist2D;
 
 using BaseType = mrt::common::BaseType;
 
-/// Geometry and limits of one base, validated by validate().
+using BaseGeometry = mrt::common::BaseGeometry;
+
+/// Geometry and limits of one base, validated by validate(). The geometry
+/// (type, wheel_radius, track, wheel_distance, wheel_angles) is the one
+/// geometry type of the stack, mrt::common::BaseGeometry, shared with
+/// mrt_sim; the board adds its limits.
 ///
 /// Differential: wheels [left, right], `track` apart; positive wheel speed
 /// drives the robot forward.
@@ -29,22 +34,14 @@ using BaseType = mrt::common::BaseType;
 /// angular speed is w_i = (-sin(a) vx + cos(a) vy + L omega) / r (the
 /// convention of mrt_common/base_kinematics.h, mrt_sim and
 /// mrt_msgs/WheelCommand).
-struct BaseParams {
+struct BaseParams : BaseGeometry {
   std::string name = "ianus3";
-  BaseType type = BaseType::kDifferential;
-  double wheel_radius = 0.05;          // m
-  double track = 0.38;                 // m, differential only
-  double wheel_distance = 0.20;        // m, omni only
-  std::vector<double> wheel_angles;    // rad, omni only
   double max_wheel_speed = 24.0;       // rad/s, saturation (0 = none)
   double max_wheel_accel = 0.0;        // rad/s^2, acceleration limit (0 = none)
   double deadband_linear = 0.0;        // m/s: |v| below it is zeroed
   double deadband_angular = 0.0;       // rad/s: |omega| below it is zeroed
   int counts_per_rev = 8192;           // encoder counts per wheel revolution
 
-  std::size_t wheel_count() const {
-    return type == BaseType::kDifferential ? 2 : wheel_angles.size();
-  }
   /// Throws std::invalid_argument naming the offending parameter.
   void validate() const;
 };

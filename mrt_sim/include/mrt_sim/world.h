@@ -111,7 +111,7 @@ struct SensorsConfig {
 struct RobotConfig {
   std::string name;           // namespace and frame prefix
   std::string color = "black";  // seen by the other robots' vision
-  BaseGeometry base;
+  BaseConfig base;
   Pose2D initial_pose;
   SensorsConfig sensors;
 };

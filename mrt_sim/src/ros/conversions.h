@@ -1,5 +1,6 @@
-// Conversions between the simulator core's types and ROS messages. Pure
-// functions: no publishers, no parameters, no clocks.
+// Conversions between the simulator core's types and ROS messages (the rviz
+// markers are in markers.h). Pure functions: no publishers, no parameters,
+// no clocks.
 #pragma once
 
 #include <string>
@@ -14,16 +15,15 @@
 #include <ros/time.h>
 #include <sensor_msgs/NavSatFix.h>
 #include <sensor_msgs/Range.h>
-#include <std_msgs/ColorRGBA.h>
-#include <visualization_msgs/MarkerArray.h>
 
+#include "mrt_common_ros/conversions.h"
 #include "mrt_sim/simulator.h"
 
 namespace mrt::sim::node {
 
-/// Mean Earth radius used by the equirectangular local-tangent-plane
-/// conversion of the DGPS (WGS84 semi-major axis), m.
-constexpr double kEarthRadius = 6378137.0;
+// Pose and transform of a Pose2D: the stack's one copy, in mrt_common_ros.
+using mrt::ros_common::to_pose;
+using mrt::ros_common::to_transform;
 
 /// Frame names of one robot: "<prefix><robot>/<suffix>".
 struct RobotFrames {
@@ -37,10 +37,6 @@ struct RobotFrames {
 };
 RobotFrames make_frames(const std::string& frame_prefix, const std::string& robot,
                         const std::string& sensor_parent_suffix);
-
-geometry_msgs::Pose to_pose(const Pose2D& p, double z = 0.0);
-geometry_msgs::TransformStamped to_transform(const Pose2D& p, const std::string& parent,
-                                             const std::string& child, const ros::Time& stamp);
 
 /// Ground truth: pose in the world frame, twist in the body frame (the twist
 /// applied during the last step), zero covariance.
@@ -63,31 +59,10 @@ mrt_msgs::Percept to_percept(const std::vector<SeenObject>& seen, const SensorsC
                              const std::string& robot, const std::string& frame,
                              const ros::Time& stamp);
 
-/// Equirectangular conversion of a world position to latitude/longitude
-/// around the datum (the world origin), x east and y north.
-void world_to_geodetic(double lat0_deg, double lon0_deg, const Point2D& p, double& lat_deg,
-                       double& lon_deg);
+/// The DGPS fix of world position `p`: latitude/longitude by
+/// mrt::common::LocalTangentPlane around the datum (the world origin, x east
+/// and y north).
 sensor_msgs::NavSatFix to_navsat(const Point2D& p, const SensorsConfig& cfg, const std::string& frame,
                                  const ros::Time& stamp);
-
-/// RGBA of a symbolic colour ("yellow", "sky_blue", "#ff8000", ...); grey
-/// when unknown or empty.
-std_msgs::ColorRGBA color_of(const std::string& name, float alpha = 1.0f);
-
-/// Static markers of a world: floor (green when it has field lines), walls,
-/// field lines, posts and goals, in `frame`.
-visualization_msgs::MarkerArray world_markers(const World& w, const std::string& frame);
-
-/// Markers of what moves: the ball, the movers and every robot (footprint,
-/// heading arrow, name), in `frame` (the world frame).
-visualization_msgs::MarkerArray dynamic_markers(const World& w, const std::vector<RobotState>& robots,
-                                                const std::string& frame, const ros::Time& stamp);
-
-/// What one robot sees, drawn in the world frame from its true pose: a
-/// sphere per object in the object's colour, a ray from the robot to it, the
-/// sampled field-line points and a label per object. Starts with DELETEALL.
-visualization_msgs::MarkerArray percept_markers(const std::vector<SeenObject>& seen,
-                                                const Pose2D& robot_pose, const std::string& frame,
-                                                const ros::Time& stamp);
 
 }  // namespace mrt::sim::node

@@ -1,4 +1,5 @@
-// Parameters of sim_node, read once at start-up into a validated struct.
+// Parameters of sim_node, read once at start-up into a validated struct
+// (the stack's one node-parameter style: mrt_common_ros/params.h).
 #pragma once
 
 #include <stdexcept>
@@ -7,12 +8,6 @@
 #include <ros/node_handle.h>
 
 namespace mrt::sim::node {
-
-/// A bad parameter: what() names it ("~rate_hz: must be > 0, got -3").
-class ParameterError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
 
 struct NodeOptions {
   std::string world_file;              // ~world (required)
@@ -34,8 +29,9 @@ struct NodeOptions {
   long steps_per(double rate) const;
 };
 
-/// Reads and validates the private parameters of `pnh`; throws
-/// ParameterError naming the first bad one.
+/// Reads and validates the private parameters of `pnh` with
+/// mrt_common_ros's ParamReader; throws its ParamError naming the first bad
+/// one ("~rate_hz: expected a finite number > 0").
 NodeOptions load_node_options(const ros::NodeHandle& pnh);
 
 }  // namespace mrt::sim::node

@@ -68,7 +68,7 @@ void RobotInterface::on_cmd_vel(const geometry_msgs::Twist::ConstPtr& msg) {
 }
 
 void RobotInterface::on_wheel_cmd(const mrt_msgs::WheelCommand::ConstPtr& msg) {
-  const BaseGeometry& base = state().config.base;
+  const BaseConfig& base = state().config.base;
   const std::size_t n = base.wheel_count();
   std::vector<double> w;
   if (msg->mode == mrt_msgs::WheelCommand::MODE_SPEED) {

@@ -15,6 +15,7 @@
 #include <ros/ros.h>
 
 #include "conversions.h"
+#include "markers.h"
 #include "mrt_sim/simulator.h"
 #include "node_options.h"
 

@@ -1,0 +1,315 @@
+// The YAML world-file loader: every error names file:line:column (the
+// strict readers of mrt_common/yaml_reader.h). The format is documented in
+// the README.
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+#include "mrt_common/angle.h"
+#include "mrt_common/parse_error.h"
+#include "mrt_common/yaml_reader.h"
+#include "mrt_sim/world.h"
+
+namespace mrt::sim {
+
+using mrt::common::deg_to_rad;
+using mrt::common::kPi;
+using mrt::common::ParseError;
+
+namespace {
+
+using YAML::Node;
+
+// Reads YAML nodes into the world structs; every error names the node
+// (the strict readers: mrt_common/yaml_reader.h).
+class Loader : private mrt::common::YamlReader {
+ public:
+  using YamlReader::YamlReader;
+  using YamlReader::error;
+  using YamlReader::load;
+
+  World world(const Node& root) const {
+    if (!root.IsMap()) {
+      if (root.IsNull()) throw ParseError(file(), 1, 1, "expected a map at the top level, got an empty document");
+      fail(root, "expected a map at the top level");
+    }
+    map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
+                        "movers", "robots"});
+    World w;
+    w.file = file();
+    w.name = string(root, "name", "", true, "world");
+    if (const Node n = root["seed"]) w.seed = static_cast<std::uint64_t>(integer(n, "seed", 0, std::numeric_limits<long long>::max()));
+    const Node bn = required(root, "bounds", "world");
+    const auto b = numbers(bn, "bounds", 4);
+    if (!(b[0] < b[2] && b[1] < b[3])) fail(bn, "expected 'bounds' [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax");
+    w.min_x = b[0], w.min_y = b[1], w.max_x = b[2], w.max_y = b[3];
+
+    if (const Node n = root["walls"])
+      for (const Node& e : sequence(n, "walls")) w.walls.push_back(segment(e, "walls"));
+    if (const Node n = root["field_lines"])
+      for (const Node& e : sequence(n, "field_lines")) field_line(e, w.field_lines);
+    if (const Node n = root["posts"])
+      for (const Node& e : sequence(n, "posts")) w.posts.push_back(post(e));
+    if (const Node n = root["goals"])
+      for (const Node& e : sequence(n, "goals")) w.goals.push_back(goal(e));
+    if (const Node n = root["ball"]) w.ball = ball(n);
+    if (const Node n = root["movers"])
+      for (const Node& e : sequence(n, "movers")) w.movers.push_back(mover(e));
+
+    const Node rn = required(root, "robots", "world");
+    std::set<std::string> names;
+    for (const Node& e : sequence(rn, "robots")) {
+      w.robots.push_back(robot(e));
+      if (!names.insert(w.robots.back().name).second)
+        fail(e["name"], "duplicate robot name '" + w.robots.back().name + "'");
+    }
+    if (w.robots.empty()) fail(rn, "expected at least one robot in 'robots'");
+    return w;
+  }
+
+  Segment segment(const Node& n, const std::string& key) const {
+    const auto v = numbers(n, key, 4);
+    return {{v[0], v[1]}, {v[2], v[3]}};
+  }
+
+  // [x1, y1, x2, y2], or an arc {center, radius, segments, from, to} (deg)
+  // expanded into a polygon of `segments` chords.
+  void field_line(const Node& n, std::vector<Segment>& out) const {
+    if (!n.IsMap()) {
+      out.push_back(segment(n, "field_lines"));
+      return;
+    }
+    map(n, "field_lines arc", {"center", "radius", "segments", "from", "to"});
+    const auto c = numbers(required(n, "center", "field_lines arc"), "center", 2);
+    required(n, "radius", "field_lines arc");
+    const double r = positive(n, "radius", 1.0);
+    const long long k = n["segments"] ? integer(n["segments"], "segments", 1, 3600) : 24;
+    const double from = deg_to_rad(number(n, "from", 0.0)), to = deg_to_rad(number(n, "to", 360.0));
+    for (long long i = 0; i < k; ++i) {
+      const double a0 = from + (to - from) * i / k, a1 = from + (to - from) * (i + 1) / k;
+      out.push_back({{c[0] + r * std::cos(a0), c[1] + r * std::sin(a0)},
+                     {c[0] + r * std::cos(a1), c[1] + r * std::sin(a1)}});
+    }
+  }
+
+  Post post(const Node& n) const {
+    map(n, "posts", {"name", "class", "color", "x", "y", "radius"});
+    Post p;
+    p.name = string(n, "name", "", true, "posts");
+    p.membership_class = string(n, "class", "Obstacle", false, "posts");
+    p.color = string(n, "color", "", false, "posts");
+    p.center = {number(required(n, "x", "posts"), "x"), number(required(n, "y", "posts"), "y")};
+    p.radius = positive(n, "radius", p.radius);
+    return p;
+  }
+
+  Goal goal(const Node& n) const {
+    map(n, "goals", {"name", "color", "x", "y", "theta", "width", "depth"});
+    Goal g;
+    g.name = string(n, "name", "", true, "goals");
+    g.color = string(n, "color", "", false, "goals");
+    g.pose = Pose2D(number(required(n, "x", "goals"), "x"), number(required(n, "y", "goals"), "y"),
+                    deg_to_rad(number(n, "theta", 0.0)));
+    g.width = positive(n, "width", g.width);
+    g.depth = positive(n, "depth", g.depth);
+    return g;
+  }
+
+  Ball ball(const Node& n) const {
+    map(n, "ball", {"x", "y", "vx", "vy", "radius", "friction", "restitution", "color"});
+    Ball b;
+    b.enabled = true;
+    b.position = {number(n, "x", 0.0), number(n, "y", 0.0)};
+    b.velocity = {number(n, "vx", 0.0), number(n, "vy", 0.0)};
+    b.radius = positive(n, "radius", b.radius);
+    b.friction = non_negative(n, "friction", b.friction);
+    b.restitution = fraction(n, "restitution", b.restitution);
+    b.color = string(n, "color", b.color, false, "ball");
+    return b;
+  }
+
+  Mover mover(const Node& n) const {
+    map(n, "movers", {"name", "class", "color", "radius", "speed", "loop", "waypoints"});
+    Mover m;
+    m.name = string(n, "name", "", true, "movers");
+    m.membership_class = string(n, "class", "Person", false, "movers");
+    if (m.membership_class != "Person" && m.membership_class != "Robot")
+      fail(n["class"], "expected 'class' Person or Robot, got '" + m.membership_class + "'");
+    m.color = string(n, "color", "", false, "movers");
+    m.radius = positive(n, "radius", m.radius);
+    m.speed = non_negative(n, "speed", m.speed);
+    m.loop = boolean(n, "loop", m.loop);
+    const Node wp = sequence(required(n, "waypoints", "movers"), "waypoints");
+    for (const Node& e : wp) {
+      const auto v = numbers(e, "waypoints", 2);
+      m.waypoints.push_back({v[0], v[1]});
+    }
+    if (m.waypoints.size() < 2) fail(wp, "expected at least 2 waypoints for mover '" + m.name + "'");
+    m.position = m.waypoints[0];
+    return m;
+  }
+
+  Pose2D mount(const Node& n, const std::string& what, Pose2D def) const {
+    map(n, what, {"x", "y", "theta"});
+    return Pose2D(number(n, "x", def.x), number(n, "y", def.y),
+                  n["theta"] ? deg_to_rad(number(n["theta"], "theta")) : def.theta);
+  }
+
+  RobotConfig robot(const Node& n) const {
+    map(n, "robots", {"name", "base", "base_overrides", "color", "pose", "sensors"});
+    RobotConfig r;
+    r.name = string(n, "name", "", true, "robots");
+    const Node bn = required(n, "base", "robots");
+    try {
+      r.base = base_preset(string(n, "base", "", true, "robots"));
+    } catch (const std::invalid_argument& e) {
+      fail(bn, e.what());
+    }
+    if (const Node o = n["base_overrides"]) overrides(o, r.base);
+    r.color = string(n, "color", r.color, false, "robots");
+    const auto p = numbers(required(n, "pose", "robots"), "pose", 3);
+    r.initial_pose = Pose2D(p[0], p[1], deg_to_rad(p[2]));
+    r.sensors = sensors(n["sensors"], r.base);
+    return r;
+  }
+
+  void overrides(const Node& n, BaseConfig& g) const {
+    const bool diff = g.type == BaseType::kDifferential;
+    if (diff)
+      map(n, "base_overrides", {"wheel_radius", "track", "max_wheel_speed", "body_radius"});
+    else
+      map(n, "base_overrides", {"wheel_radius", "omni_radius", "wheel_angles", "max_wheel_speed", "body_radius"});
+    g.wheel_radius = positive(n, "wheel_radius", g.wheel_radius);
+    g.track = positive(n, "track", g.track);
+    g.wheel_distance = positive(n, "omni_radius", g.wheel_distance);
+    g.max_wheel_speed = positive(n, "max_wheel_speed", g.max_wheel_speed);
+    g.body_radius = positive(n, "body_radius", g.body_radius);
+    if (const Node a = n["wheel_angles"]) {
+      sequence(a, "wheel_angles");
+      if (a.size() < 3) fail(a, "expected at least 3 numbers for 'wheel_angles'");
+      g.wheel_angles.clear();
+      for (const Node& e : a) g.wheel_angles.push_back(deg_to_rad(number(e, "wheel_angles")));
+      try {
+        wheels_to_twist(g, std::vector<double>(g.wheel_angles.size(), 0.0));
+      } catch (const std::invalid_argument&) {
+        fail(a, "expected 'wheel_angles' that determine the body twist (not all collinear)");
+      }
+    }
+  }
+
+  SensorsConfig sensors(const Node& n, const BaseConfig& base) const {
+    SensorsConfig s;
+    s.rate_mice = s.rate_encoders = s.rate_sonar = s.rate_vision = s.rate_dgps = 0.0;
+    if (!n) return s;
+    map(n, "sensors", {"mice", "encoders", "sonar", "vision", "dgps"});
+    if (const Node m = n["mice"]) mice(m, s);
+    if (const Node e = n["encoders"]) encoders(e, s);
+    if (const Node so = n["sonar"]) sonar(so, base, s);
+    if (const Node v = n["vision"]) vision(v, s);
+    if (const Node d = n["dgps"]) dgps(d, s);
+    return s;
+  }
+
+  // The two mice: shared settings, then per mouse (left, right) a mount and
+  // overrides.
+  void mice(const Node& m, SensorsConfig& s) const {
+    map(m, "mice", {"rate", "counts_per_m", "noise", "fault_rate", "fault_max_fraction", "left", "right"});
+    s.rate_mice = non_negative(m, "rate", 50.0);
+    MouseConfig shared;
+    shared.counts_per_m = positive(m, "counts_per_m", shared.counts_per_m);
+    shared.noise = non_negative(m, "noise", shared.noise);
+    shared.fault_rate = fraction(m, "fault_rate", shared.fault_rate);
+    shared.fault_max_fraction = fraction(m, "fault_max_fraction", shared.fault_max_fraction);
+    for (const char* id : {"left", "right"}) {
+      MouseConfig c = shared;
+      c.id = id;
+      c.mount = Pose2D(0.0, c.id == "left" ? 0.1 : -0.1, 0.0);
+      if (const Node e = m[id]) {
+        map(e, id, {"x", "y", "theta", "counts_per_m", "noise", "fault_rate", "fault_max_fraction"});
+        c.mount = Pose2D(number(e, "x", c.mount.x), number(e, "y", c.mount.y),
+                         e["theta"] ? deg_to_rad(number(e["theta"], "theta")) : 0.0);
+        c.counts_per_m = positive(e, "counts_per_m", c.counts_per_m);
+        c.noise = non_negative(e, "noise", c.noise);
+        c.fault_rate = fraction(e, "fault_rate", c.fault_rate);
+        c.fault_max_fraction = fraction(e, "fault_max_fraction", c.fault_max_fraction);
+      }
+      s.mice.push_back(c);
+    }
+  }
+
+  void encoders(const Node& e, SensorsConfig& s) const {
+    map(e, "encoders", {"rate", "ticks_per_rev", "noise"});
+    s.rate_encoders = non_negative(e, "rate", 50.0);
+    s.encoder_noise = non_negative(e, "noise", s.encoder_noise);
+    if (e["ticks_per_rev"]) s.ticks_per_rev = static_cast<int>(integer(e["ticks_per_rev"], "ticks_per_rev", 1, 1000000000));
+  }
+
+  void vision(const Node& v, SensorsConfig& s) const {
+    map(v, "vision", {"rate", "range", "distance_noise", "bearing_noise", "line_point_spacing"});
+    s.rate_vision = non_negative(v, "rate", 10.0);
+    s.vision_range = positive(v, "range", s.vision_range);
+    s.vision_distance_noise = non_negative(v, "distance_noise", s.vision_distance_noise);
+    s.vision_bearing_noise = deg_to_rad(non_negative(v, "bearing_noise", mrt::common::rad_to_deg(s.vision_bearing_noise)));
+    s.line_point_spacing = bounded(v, "line_point_spacing", s.line_point_spacing, 0.01, false);
+  }
+
+  void dgps(const Node& d, SensorsConfig& s) const {
+    map(d, "dgps", {"rate", "noise", "datum"});
+    s.rate_dgps = non_negative(d, "rate", 1.0);
+    s.dgps_noise = non_negative(d, "noise", s.dgps_noise);
+    if (const Node dn = d["datum"]) {
+      const auto ll = numbers(dn, "datum", 2);
+      if (std::fabs(ll[0]) > 90.0 || std::fabs(ll[1]) > 180.0)
+        fail(dn, "expected 'datum' [latitude, longitude] in degrees within [-90, 90] x [-180, 180]");
+      s.datum_latitude = ll[0];
+      s.datum_longitude = ll[1];
+    }
+  }
+
+  void sonar(const Node& n, const BaseConfig& base, SensorsConfig& s) const {
+    map(n, "sonar", {"rate", "noise", "count", "mounts", "fov", "min_range", "max_range"});
+    s.rate_sonar = non_negative(n, "rate", 10.0);
+    s.sonar_noise = non_negative(n, "noise", s.sonar_noise);
+    SonarConfig c;
+    if (const Node f = n["fov"]) c.fov = deg_to_rad(bounded(n, "fov", 0.0, 0.0, false, 179.0));
+    c.min_range = non_negative(n, "min_range", c.min_range);
+    c.max_range = positive(n, "max_range", c.max_range);
+    if (c.max_range <= c.min_range) fail(n["max_range"] ? n["max_range"] : n, "expected 'max_range' > 'min_range'");
+    const Node cn = n["count"], mn = n["mounts"];
+    if (cn && mn) fail(mn, "expected either 'count' or 'mounts' in 'sonar', not both");
+    if (cn) {
+      const long long k = integer(cn, "count", 1, 360);
+      for (long long i = 0; i < k; ++i) {
+        const double a = 2.0 * kPi * i / k;
+        c.mount = Pose2D(base.body_radius * std::cos(a), base.body_radius * std::sin(a), a);
+        s.sonars.push_back(c);
+      }
+    } else if (mn) {
+      for (const Node& e : sequence(mn, "mounts")) {
+        c.mount = mount(e, "mounts", Pose2D());
+        s.sonars.push_back(c);
+      }
+    } else {
+      fail(n, "missing required key 'count' or 'mounts' in 'sonar'");
+    }
+  }
+};
+
+}  // namespace
+
+World parse_world(const std::string& yaml_text, const std::string& file) {
+  const Loader loader(file);
+  const Node root = loader.load(yaml_text, "YAML syntax error: ");
+  try {
+    return loader.world(root);
+  } catch (const YAML::Exception& e) {  // a conversion not caught above: still name the place
+    throw loader.error(e);
+  }
+}
+
+World load_world(const std::string& path) {
+  return parse_world(mrt::common::read_file(path, "cannot open world file"), path);
+}
+
+}  // namespace mrt::sim
