@@ -91,7 +91,7 @@ void Member::run(const std::atomic<bool>* stop) {
       next += std::chrono::milliseconds(period_ms_);
       auto now = Clock::now();
       if (next < now) next = now;  // overrun: do not try to catch up
-      // Sleep in short slices so Shutdown is seen within ~10 ms.
+      // Sleep in short slices so shutdown() is seen within ~10 ms.
       while (running() && Clock::now() < next) {
         auto slice = std::min<Clock::duration>(next - Clock::now(), std::chrono::milliseconds(10));
         std::this_thread::sleep_for(slice);

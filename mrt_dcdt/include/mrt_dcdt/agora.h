@@ -1,5 +1,6 @@
-// DCDT_Agora (manual §3.1, §3.3.1): hosts Members, owns the PostOffice and,
-// as system Members, the InnerLinkManager, the channels and the Finder.
+// Agora (the manual's DCDT_Agora, §3.1, §3.3.1; its legacy names are in
+// dcdt.h): hosts Members, owns the PostOffice and, as system Members, the
+// InnerLinkManager, the channels and the Finder.
 #pragma once
 
 #include <atomic>

@@ -1,6 +1,7 @@
-// DCDT_Member (manual §3.3.2): a thread of an Agora. Periodic (constructed
-// with a period in ms), cyclic (no period, no subscriptions after Init) or
-// message-driven (no period, subscribed to some type in init()).
+// Member (the manual's DCDT_Member, §3.3.2; its legacy names are in dcdt.h):
+// a thread of an Agora. Periodic (constructed with a period in ms), cyclic
+// (no period, no subscriptions after init()) or message-driven (no period,
+// subscribed to some type in init()).
 #pragma once
 
 #include <atomic>

@@ -1,5 +1,6 @@
-// DCDT_Msg (manual §3.3.3): a header (type, member id, agora id, priority,
-// delivery warranty, creation time, payload length) and an opaque payload.
+// Msg (the manual's DCDT_Msg, §3.3.3; its legacy names are in dcdt.h): a
+// header (type, member id, agora id, priority, delivery warranty, creation
+// time, payload length) and an opaque payload.
 #pragma once
 
 #include <cstdint>
@@ -29,7 +30,7 @@ class Msg {
   Msg() = default;
   Msg(int type, int member_id, int agora_id, int warranty);
 
-  // --- the legacy API (manual §3.3.3) ---
+  // --- the header fields and the payload (manual §3.3.3) ---
   int type() const { return header_.type; }
   int member_id() const { return header_.member_id; }
   int agora_id() const { return header_.agora_id; }
