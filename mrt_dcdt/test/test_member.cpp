@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include <dcdt.h>
 
@@ -173,6 +176,79 @@ TEST(Member, TwoStandaloneAgorasOnOneMachineTalkThroughInnerLinks) {
   ASSERT_EQ(c.values.size(), 20u);
   for (int i = 0; i < 20; ++i) EXPECT_EQ(c.values[i], i);
   for (int id : c.agora_ids) EXPECT_EQ(id, a.GetAgoraID());
+}
+
+// Every legacy name of dcdt.h reaches the snake_case API: a producer made
+// with the (agora, period) constructor shares one message built with each
+// CreateMsg overload; a message-driven consumer reads every header field back.
+class LegacyProducer : public DCDT_Member {
+ public:
+  explicit LegacyProducer(DCDT_Agora* a) : DCDT_Member(a, 5) {}
+  void DoYourJob(int) override {
+    DCDT_Msg* m = CreateMsg(MSG_FROM_MAP, DCDT_DW_NONE);
+    m->SetPriority(7);
+    char* p = static_cast<char*>(m->AllocPayload(3));
+    std::memcpy(p, "abc", 3);
+    ShareMsg(m);
+    DCDT_Msg* d = CreateMsg(MSG_FROM_MAP);  // default warranty: guaranteed
+    d->SetPayload("xy", 2);
+    ShareMsg(d);
+    Terminate();
+  }
+};
+
+class LegacyConsumer : public DCDT_Member {
+ public:
+  explicit LegacyConsumer(DCDT_Agora* a) : DCDT_Member(a) {}
+  void Init() override {
+    SubscribeMsgType(MSG_FROM_VISION);
+    UnSubscribeMsgType(MSG_FROM_VISION);
+    UnSubscribeAll();
+    SubscribeMsgType(MSG_FROM_MAP, DCDT_LOCAL_MSG);
+  }
+  void DoYourJob(int) override {
+    while (DCDT_Msg* m = ReceiveMsg()) {
+      types.push_back(m->ReadType());
+      member_ids.push_back(m->ReadMemberID());
+      agora_ids.push_back(m->ReadAgoraID());
+      priorities.push_back(m->ReadPriority());
+      warranties.push_back(m->ReadDeliveryWarranty());
+      payloads.emplace_back(static_cast<const char*>(m->GetPayload()), m->ReadPayloadLen());
+      RemoveCurrMsg();
+    }
+    if (payloads.size() == 2) Terminate();
+  }
+  std::vector<int> types, member_ids, agora_ids, priorities, warranties;
+  std::vector<std::string> payloads;
+};
+
+TEST(Member, EveryLegacyNameOfDcdtHForwards) {
+  DCDT_Agora agora(dcdt_test::IsolatedOptions());
+  LegacyProducer p(&agora);
+  LegacyConsumer c(&agora);
+  agora.AddMember(&p);
+  agora.AddMember(&c);
+  agora.ActivateMember(&c);
+  agora.ActivateMember(&p);
+  std::thread guard([&] {
+    for (int i = 0; i < 500 && c.GetState() != MemberState::TERMINATED; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    agora.Shutdown();
+  });
+  agora.LetsWork();
+  guard.join();
+  EXPECT_EQ(p.GetPeriod(), 5);
+  EXPECT_EQ(c.GetPeriod(), 0);
+  EXPECT_EQ(p.GetAgora(), &agora);
+  EXPECT_NE(p.GetMemberID(), c.GetMemberID());
+  // Both messages of MSG_FROM_MAP (23) from p, in order: "abc" with priority
+  // 7 and DCDT_DW_NONE (0), then "xy" with priority 0 and DCDT_DW_GUARANTEED (2).
+  EXPECT_EQ(c.types, (std::vector<int>{23, 23}));
+  EXPECT_EQ(c.member_ids, (std::vector<int>{p.GetMemberID(), p.GetMemberID()}));
+  EXPECT_EQ(c.agora_ids, (std::vector<int>{agora.GetAgoraID(), agora.GetAgoraID()}));
+  EXPECT_EQ(c.priorities, (std::vector<int>{7, 0}));
+  EXPECT_EQ(c.warranties, (std::vector<int>{0, 2}));
+  EXPECT_EQ(c.payloads, (std::vector<std::string>{"abc", "xy"}));
 }
 
 TEST(Member, ManualMemberZeroExampleRuns) {
