@@ -27,9 +27,8 @@
 #include "mrt_dcdt/xml_message.h"
 
 using namespace mrt::dcdt;
-using namespace mrt::dcdt::testing;
+using namespace mrt::dcdt::test_support;
 using Clock = std::chrono::steady_clock;
-using dcdt_test::free_port;
 
 namespace {
 

@@ -13,8 +13,12 @@
 
 #include "mrt_dcdt/agora.h"
 #include "mrt_dcdt/channel.h"
+#include "mrt_dcdt/testing/process.h"
 
 namespace dcdt_test {
+
+// The installed test support (Process, free_port, slurp ...).
+using namespace mrt::dcdt::test_support;
 
 /// Polls pred every 5 ms for at most timeout_ms; returns its last value.
 inline bool WaitFor(const std::function<bool()>& pred, int timeout_ms = 3000) {

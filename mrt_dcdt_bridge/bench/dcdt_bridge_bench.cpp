@@ -32,9 +32,8 @@
 extern char** environ;
 
 using namespace mrt::dcdt;
-using namespace mrt::dcdt::testing;
+using namespace mrt::dcdt::test_support;
 using Clock = std::chrono::steady_clock;
-using dcdt_test::free_port;
 
 namespace {
 

@@ -110,9 +110,9 @@ std::string Unescape(const std::string& s) {
 
 TEST(Bridge, RosPerceptReachesTheLegacyAgora) {
   const std::string out = g_inner_dir + "_motion.txt";
-  dcdt_test::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_TO_MOTION", "--expect", "1",
+  mrt::dcdt::test_support::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_TO_MOTION", "--expect", "1",
                              "--duration", "30", "--out", out});
-  ASSERT_TRUE(wait_for([&] { return dcdt_test::slurp(out).find("ready") != std::string::npos; }, 10.0));
+  ASSERT_TRUE(wait_for([&] { return mrt::dcdt::test_support::slurp(out).find("ready") != std::string::npos; }, 10.0));
   ros::NodeHandle nh;
   auto pub = nh.advertise<mrt_msgs::Percept>("motion/percepts", 10);
   const auto sent = SamplePercept();
@@ -120,13 +120,13 @@ TEST(Bridge, RosPerceptReachesTheLegacyAgora) {
       [&] {
         pub.publish(sent);
         ros::WallDuration(0.1).sleep();
-        return !dcdt_test::lines(out, "recv ").empty();
+        return !mrt::dcdt::test_support::lines(out, "recv ").empty();
       },
       20.0));
-  auto line = dcdt_test::lines(out, "recv ")[0];
-  EXPECT_EQ(dcdt_test::field(line, "type"), "32");
-  EXPECT_EQ(dcdt_test::field(line, "warranty"), "2");
-  const XmlMessage x = decode_xml(Unescape(dcdt_test::field(line, "payload")));
+  auto line = mrt::dcdt::test_support::lines(out, "recv ")[0];
+  EXPECT_EQ(mrt::dcdt::test_support::field(line, "type"), "32");
+  EXPECT_EQ(mrt::dcdt::test_support::field(line, "warranty"), "2");
+  const XmlMessage x = decode_xml(Unescape(mrt::dcdt::test_support::field(line, "payload")));
   EXPECT_EQ(x.sec, 1234);
   EXPECT_EQ(x.nsec, 567890123u);
   EXPECT_EQ(x.frame, "robot1/base_link");
@@ -147,9 +147,9 @@ TEST(Bridge, NoEchoOnATopicMappedBothWays) {
   // A legacy Agora listening to MSG_FROM_MAP: the bridge must forward our
   // three messages to DCDT (else "no echo" would hold trivially).
   const std::string out = g_inner_dir + "_map.txt";
-  dcdt_test::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_FROM_MAP", "--expect", "3",
+  mrt::dcdt::test_support::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_FROM_MAP", "--expect", "3",
                              "--linger", "700", "--duration", "30", "--out", out});
-  ASSERT_TRUE(wait_for([&] { return dcdt_test::slurp(out).find("ready") != std::string::npos; }, 10.0));
+  ASSERT_TRUE(wait_for([&] { return mrt::dcdt::test_support::slurp(out).find("ready") != std::string::npos; }, 10.0));
   ros::NodeHandle nh;
   std::atomic<int> seen{0};
   auto sub = nh.subscribe<mrt_msgs::Percept>("map/percepts", 10, [&](const mrt_msgs::Percept::ConstPtr&) { ++seen; });
@@ -159,12 +159,12 @@ TEST(Bridge, NoEchoOnATopicMappedBothWays) {
   for (int i = 0; i < 3; ++i) pub.publish(SamplePercept());
   spin_for(1.5);
   EXPECT_EQ(seen.load(), 3);  // ours only: the bridge did not send them back
-  EXPECT_EQ(legacy.wait(15000), 0) << dcdt_test::slurp(out);
-  const auto recv = dcdt_test::lines(out, "recv ");
-  ASSERT_EQ(recv.size(), 3u) << dcdt_test::slurp(out);  // each exactly once (the linger would show more)
+  EXPECT_EQ(legacy.wait(15000), 0) << mrt::dcdt::test_support::slurp(out);
+  const auto recv = mrt::dcdt::test_support::lines(out, "recv ");
+  ASSERT_EQ(recv.size(), 3u) << mrt::dcdt::test_support::slurp(out);  // each exactly once (the linger would show more)
   for (const auto& l : recv) {
-    EXPECT_EQ(dcdt_test::field(l, "type"), "23");
-    EXPECT_NE(dcdt_test::field(l, "payload").find("robot1/base_link"), std::string::npos) << l;
+    EXPECT_EQ(mrt::dcdt::test_support::field(l, "type"), "23");
+    EXPECT_NE(mrt::dcdt::test_support::field(l, "payload").find("robot1/base_link"), std::string::npos) << l;
   }
 }
 
@@ -210,14 +210,14 @@ TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
 
 TEST(Bridge, MalformedDcdtPayloadIsDroppedCountedAndTheNodeKeepsRunning) {
   const std::string out = g_inner_dir + "_bad.txt";
-  dcdt_test::Process bad({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--text",
+  mrt::dcdt::test_support::Process bad({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--text",
                           "<message time='1'><object name='x'></message> {i}", "--count", "3", "--rate", "50",
                           "--wait-peers", "1", "--duration", "10", "--out", out});
   EXPECT_EQ(bad.wait(15000), 0);
   // Valid XML, but percepts where the mapping wants commands: the conversion
   // to ROS fails; counted apart, and never as traffic in.
   const std::string out2 = g_inner_dir + "_shape.txt";
-  dcdt_test::Process shape({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--xml",
+  mrt::dcdt::test_support::Process shape({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--xml",
                             DCDT_TEST_DATA "/percept_ball.xml", "--count", "2", "--rate", "50", "--wait-peers", "1",
                             "--duration", "10", "--out", out2});
   EXPECT_EQ(shape.wait(15000), 0);

@@ -17,7 +17,7 @@
 #include "mrt_dcdt/config.h"
 #include "mrt_dcdt/xml_message.h"
 
-namespace mrt::dcdt::testing {
+namespace mrt::dcdt::test_support {
 
 using BenchClock = std::chrono::steady_clock;
 
@@ -137,4 +137,4 @@ inline void print_result(const char* name, const BenchResult& r) {
   std::printf("%s_latency_p99: %.1f us\n", name, r.p99);
 }
 
-}  // namespace mrt::dcdt::testing
+}  // namespace mrt::dcdt::test_support

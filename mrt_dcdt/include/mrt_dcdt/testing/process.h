@@ -1,5 +1,6 @@
-// Child processes for the integration tests: spawn dcdt_agora, wait with a
-// deadline, kill only what we started (by pid).
+// Test support (header-only, no ROS): child processes for the integration
+// tests and the bridge's rostest (spawn dcdt_agora, wait with a deadline,
+// kill only what we started, by pid), free loopback ports, output files.
 #pragma once
 
 #include <fcntl.h>
@@ -20,7 +21,7 @@
 
 extern char** environ;
 
-namespace dcdt_test {
+namespace mrt::dcdt::test_support {
 
 class Process {
  public:
@@ -123,4 +124,4 @@ inline void write_file(const std::string& path, const std::string& text) {
   f << text;
 }
 
-}  // namespace dcdt_test
+}  // namespace mrt::dcdt::test_support
