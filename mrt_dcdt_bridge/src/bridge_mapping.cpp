@@ -10,7 +10,7 @@ namespace mrt::dcdt {
 using mrt::common::ParseError;
 using mrt::common::YamlReader;
 
-const char* KindName(PayloadKind k) {
+const char* kind_name(PayloadKind k) {
   switch (k) {
     case PayloadKind::PERCEPT: return "percept";
     case PayloadKind::CRISP_DATA: return "crisp_data";
@@ -22,7 +22,7 @@ const char* KindName(PayloadKind k) {
 
 namespace {
 
-std::string Scalar(const YamlReader& r, const YAML::Node& entry, const char* key, bool required,
+std::string scalar(const YamlReader& r, const YAML::Node& entry, const char* key, bool required,
                    const std::string& def = "") {
   const YAML::Node v = entry[key];
   if (!v) {
@@ -33,7 +33,7 @@ std::string Scalar(const YamlReader& r, const YAML::Node& entry, const char* key
   return v.as<std::string>();
 }
 
-std::vector<TopicMapping> ParseList(const YamlReader& r, const YAML::Node& list, bool to_ros) {
+std::vector<TopicMapping> parse_list(const YamlReader& r, const YAML::Node& list, bool to_ros) {
   std::vector<TopicMapping> out;
   if (!list) return out;
   if (!list.IsSequence()) r.fail(list, std::string(to_ros ? "to_ros" : "to_dcdt") + " must be a list");
@@ -48,26 +48,26 @@ std::vector<TopicMapping> ParseList(const YamlReader& r, const YAML::Node& list,
     }
     TopicMapping m;
     m.line = e.Mark().line + 1;
-    const std::string type = Scalar(r, e, "type", true);
-    m.type = MsgTypeFromName(type.c_str());
+    const std::string type = scalar(r, e, "type", true);
+    m.type = msg_type_from_name(type.c_str());
     if (m.type < 0) r.fail(e["type"], "unknown DCDT message type '" + type + "'");
-    m.topic = Scalar(r, e, "topic", true);
+    m.topic = scalar(r, e, "topic", true);
     if (m.topic.empty()) r.fail(e["topic"], "empty topic");
-    const std::string kind = Scalar(r, e, "kind", false, "percept");
+    const std::string kind = scalar(r, e, "kind", false, "percept");
     if (kind == "percept") m.kind = PayloadKind::PERCEPT;
     else if (kind == "crisp_data") m.kind = PayloadKind::CRISP_DATA;
     else if (kind == "commands") m.kind = PayloadKind::COMMANDS;
     else if (kind == "raw") m.kind = PayloadKind::RAW;
     else r.fail(e["kind"], "kind must be percept, crisp_data, commands or raw, got '" + kind + "'");
     if (to_ros) {
-      const std::string s = Scalar(r, e, "scope", false, "all");
+      const std::string s = scalar(r, e, "scope", false, "all");
       if (s == "local") m.scope = DCDT_LOCAL_MSG;
       else if (s == "remote") m.scope = DCDT_REMOTE_MSG;
       else if (s == "all") m.scope = DCDT_ALL_MSG;
       else r.fail(e["scope"], "scope must be local, remote or all, got '" + s + "'");
       if (!types.insert(m.type).second) r.fail(e["type"], "type " + type + " mapped twice in to_ros");
     } else {
-      const std::string w = Scalar(r, e, "warranty", false, "guaranteed");
+      const std::string w = scalar(r, e, "warranty", false, "guaranteed");
       if (w == "none") m.warranty = DCDT_DW_NONE;
       else if (w == "retransmit") m.warranty = DCDT_DW_RETRANSMIT;
       else if (w == "guaranteed") m.warranty = DCDT_DW_GUARANTEED;
@@ -81,7 +81,7 @@ std::vector<TopicMapping> ParseList(const YamlReader& r, const YAML::Node& list,
 
 }  // namespace
 
-BridgeMapping ParseBridgeMapping(const std::string& text, const std::string& file) {
+BridgeMapping parse_bridge_mapping(const std::string& text, const std::string& file) {
   const YamlReader r(file);
   const YAML::Node root = r.load(text);
   if (!root.IsMap()) throw ParseError(file, 1, 0, "expected a mapping with 'to_ros' and/or 'to_dcdt'");
@@ -91,8 +91,8 @@ BridgeMapping ParseBridgeMapping(const std::string& text, const std::string& fil
   }
   BridgeMapping m;
   try {
-    m.to_ros = ParseList(r, root["to_ros"], true);
-    m.to_dcdt = ParseList(r, root["to_dcdt"], false);
+    m.to_ros = parse_list(r, root["to_ros"], true);
+    m.to_dcdt = parse_list(r, root["to_dcdt"], false);
   } catch (const YAML::Exception& e) {
     throw r.error(e);
   }
@@ -100,8 +100,8 @@ BridgeMapping ParseBridgeMapping(const std::string& text, const std::string& fil
   return m;
 }
 
-BridgeMapping LoadBridgeMapping(const std::string& path) {
-  return ParseBridgeMapping(mrt::common::read_file(path, "cannot read the mapping file"), path);
+BridgeMapping load_bridge_mapping(const std::string& path) {
+  return parse_bridge_mapping(mrt::common::read_file(path, "cannot read the mapping file"), path);
 }
 
 }  // namespace mrt::dcdt

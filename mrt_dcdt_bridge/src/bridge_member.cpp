@@ -5,17 +5,17 @@ namespace mrt::dcdt {
 BridgeMember::BridgeMember(Agora* agora, BridgeMapping mapping, Deliver deliver)
     : Member(agora), mapping_(std::move(mapping)), deliver_(std::move(deliver)) {}
 
-void BridgeMember::Init() {
-  for (const auto& m : mapping_.to_ros) SubscribeMsgType(m.type, m.scope);
+void BridgeMember::init() {
+  for (const auto& m : mapping_.to_ros) subscribe_msg_type(m.type, m.scope);
 }
 
-void BridgeMember::DoYourJob(int) {
-  while (Msg* msg = ReceiveMsg()) {
+void BridgeMember::do_your_job(int) {
+  while (Msg* msg = receive_msg()) {
     const TopicMapping* map = nullptr;
     for (const auto& m : mapping_.to_ros)
-      if (m.type == msg->ReadType()) map = &m;
+      if (m.type == msg->type()) map = &m;
     if (!map) {
-      CountError("unmapped type " + std::to_string(msg->ReadType()), BridgeError::DROPPED);
+      count_error("unmapped type " + std::to_string(msg->type()), BridgeError::DROPPED);
       continue;
     }
     bool delivered = false;
@@ -24,9 +24,9 @@ void BridgeMember::DoYourJob(int) {
     } else {
       XmlMessage xml;
       try {
-        xml = DecodeXml(msg->PayloadString());
+        xml = decode_xml(msg->payload_string());
       } catch (const XmlError& e) {
-        CountError("type " + std::to_string(msg->ReadType()) + " from agora " + std::to_string(msg->ReadAgoraID()) +
+        count_error("type " + std::to_string(msg->type()) + " from agora " + std::to_string(msg->agora_id()) +
                        ": " + e.what(),
                    BridgeError::PARSE);
         continue;
@@ -35,25 +35,25 @@ void BridgeMember::DoYourJob(int) {
     }
     if (!delivered) continue;
     std::lock_guard<std::mutex> l(mutex_);
-    ++stats_.in[msg->ReadType()];
+    ++stats_.in[msg->type()];
   }
-  RemoveCurrMsg();
+  remove_curr_msg();
 }
 
-void BridgeMember::Share(const TopicMapping& m, const std::string& payload) {
+void BridgeMember::share(const TopicMapping& m, const std::string& payload) {
   if (payload.size() > kMaxPayload) {
-    CountError("payload of " + m.topic + " larger than " + std::to_string(kMaxPayload) + " bytes",
+    count_error("payload of " + m.topic + " larger than " + std::to_string(kMaxPayload) + " bytes",
                BridgeError::DROPPED);
     return;
   }
-  Msg* msg = CreateMsg(m.type, m.warranty);
-  msg->SetPayload(payload);
-  ShareMsg(msg);
+  Msg* msg = create_msg(m.type, m.warranty);
+  msg->set_payload(payload);
+  share_msg(msg);
   std::lock_guard<std::mutex> l(mutex_);
   ++stats_.out[m.type];
 }
 
-void BridgeMember::CountError(const std::string& what, BridgeError kind) {
+void BridgeMember::count_error(const std::string& what, BridgeError kind) {
   std::lock_guard<std::mutex> l(mutex_);
   switch (kind) {
     case BridgeError::PARSE: ++stats_.parse_errors; break;
@@ -63,7 +63,7 @@ void BridgeMember::CountError(const std::string& what, BridgeError kind) {
   stats_.last_error = what;
 }
 
-BridgeStats BridgeMember::Stats() {
+BridgeStats BridgeMember::stats() {
   std::lock_guard<std::mutex> l(mutex_);
   return stats_;
 }

@@ -8,8 +8,8 @@
 #include <memory>
 #include <thread>
 
-#include "mrt_common/parse_error.h"
-#include "mrt_dcdt_bridge/agora.h"
+#include "mrt_common_ros/params.h"
+#include "mrt_dcdt/agora.h"
 #include "mrt_dcdt_bridge/bridge_member.h"
 #include "ros/conversions.h"
 
@@ -27,36 +27,38 @@ struct NodeOptions {
   int queue_size = 100;
 };
 
-NodeOptions ReadOptions(ros::NodeHandle& pnh) {
+// Every parameter, read once and validated (README "Parameters").
+NodeOptions read_options(const ros::NodeHandle& pnh) {
   NodeOptions o;
-  pnh.param("agora_config", o.agora_config, o.agora_config);
-  if (!pnh.getParam("mapping", o.mapping) || o.mapping.empty())
-    throw std::invalid_argument("parameter ~mapping (path of the YAML mapping file) is required");
-  pnh.param("inner_dir", o.inner_dir, o.inner_dir);
-  pnh.param("policy", o.policy, o.policy);
-  pnh.param("agora_id", o.agora_id, o.agora_id);
-  pnh.param("diagnostics_period", o.diagnostics_period, o.diagnostics_period);
-  pnh.param("queue_size", o.queue_size, o.queue_size);
-  if (o.diagnostics_period <= 0) throw std::invalid_argument("parameter ~diagnostics_period must be > 0");
-  if (o.queue_size <= 0) throw std::invalid_argument("parameter ~queue_size must be > 0");
-  if (o.agora_id < 0) throw std::invalid_argument("parameter ~agora_id must be >= 0");
+  mrt::ros_common::ParamReader p(pnh);
+  p.get("agora_config", o.agora_config)
+      .require("mapping", o.mapping, "the path of the YAML mapping file")
+      .get("inner_dir", o.inner_dir)
+      .get("policy", o.policy)
+      .get("agora_id", o.agora_id)
+      .get_positive("diagnostics_period", o.diagnostics_period)
+      .get_positive("queue_size", o.queue_size);
+  p.check(!o.mapping.empty(), "mapping", "the path of the YAML mapping file");
+  p.check(o.agora_id >= 0, "agora_id", "an integer >= 0 (0 = random)");
+  PostOfficePolicy policy;
+  p.check(parse_policy(o.policy, &policy), "policy", "SLWB, SLWDWCV or SLWSM");
   return o;
 }
 
 class BridgeNode {
  public:
-  BridgeNode(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
-    const NodeOptions o = ReadOptions(pnh);
+  BridgeNode(ros::NodeHandle& nh, const ros::NodeHandle& pnh) {
+    const NodeOptions o = read_options(pnh);
     AgoraOptions ao;
     if (!o.agora_config.empty()) {
       ao.network = true;
-      ao.config = LoadAgoraConfig(o.agora_config);
-    } else if (!ParsePolicy(o.policy, &ao.config.policy)) {
-      throw std::invalid_argument("parameter ~policy must be SLWB, SLWDWCV or SLWSM");
+      ao.config = load_agora_config(o.agora_config);
+    } else {
+      parse_policy(o.policy, &ao.config.policy);  // checked by read_options
     }
     ao.inner_dir = o.inner_dir;
     ao.agora_id = o.agora_id;
-    BridgeMapping mapping = LoadBridgeMapping(o.mapping);
+    BridgeMapping mapping = load_bridge_mapping(o.mapping);
     agora_ = std::make_unique<Agora>(ao);
 
     for (const auto& m : mapping.to_ros) {
@@ -70,41 +72,41 @@ class BridgeNode {
       }
     }
     member_ = std::make_unique<BridgeMember>(
-        agora_.get(), mapping, [this](const TopicMapping& m, const Msg& msg, const XmlMessage* xml) { return ToRos(m, msg, xml); });
-    for (const auto& m : member_->mapping().to_dcdt) Subscribe(nh, m, o.queue_size);
+        agora_.get(), mapping, [this](const TopicMapping& m, const Msg& msg, const XmlMessage* xml) { return forward_to_ros(m, msg, xml); });
+    for (const auto& m : member_->mapping().to_dcdt) subscribe(nh, m, o.queue_size);
     diag_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-    diag_timer_ = nh.createTimer(ros::Duration(o.diagnostics_period), [this](const ros::TimerEvent&) { Diagnostics(); });
-    agora_->AddMember(member_.get());
-    agora_->ActivateMember(member_.get());
-    worker_ = std::thread([this] { agora_->LetsWork(); });
-    ROS_INFO("dcdt_bridge: Agora %d (%s), %zu DCDT->ROS and %zu ROS->DCDT mappings", agora_->GetAgoraID(),
+    diag_timer_ = nh.createTimer(ros::Duration(o.diagnostics_period), [this](const ros::TimerEvent&) { publish_diagnostics(); });
+    agora_->add_member(member_.get());
+    agora_->activate_member(member_.get());
+    worker_ = std::thread([this] { agora_->lets_work(); });
+    ROS_INFO("dcdt_bridge: Agora %d (%s), %zu DCDT->ROS and %zu ROS->DCDT mappings", agora_->agora_id(),
              ao.network ? "NETWORK" : "STANDALONE", member_->mapping().to_ros.size(), member_->mapping().to_dcdt.size());
   }
 
   ~BridgeNode() {
-    agora_->Shutdown();
+    agora_->shutdown();
     if (worker_.joinable()) worker_.join();
     member_.reset();
     agora_.reset();
   }
 
  private:
-  bool ToRos(const TopicMapping& m, const Msg& msg, const XmlMessage* xml) {
+  bool forward_to_ros(const TopicMapping& m, const Msg& msg, const XmlMessage* xml) {
     auto& pub = pubs_.at(m.type);
     try {
       switch (m.kind) {
-        case PayloadKind::PERCEPT: pub.publish(ros_conv::ToPercept(*xml)); break;
-        case PayloadKind::CRISP_DATA: pub.publish(ros_conv::ToCrispData(*xml)); break;
-        case PayloadKind::COMMANDS: pub.publish(ros_conv::ToCommands(*xml)); break;
+        case PayloadKind::PERCEPT: pub.publish(ros_conv::to_percept(*xml)); break;
+        case PayloadKind::CRISP_DATA: pub.publish(ros_conv::to_crisp_data(*xml)); break;
+        case PayloadKind::COMMANDS: pub.publish(ros_conv::to_commands(*xml)); break;
         case PayloadKind::RAW: {
           std_msgs::String s;
-          s.data = msg.PayloadString();
+          s.data = msg.payload_string();
           pub.publish(s);
           break;
         }
       }
     } catch (const XmlError& e) {
-      member_->CountError(std::string("type ") + std::to_string(m.type) + ": " + e.what(), BridgeError::CONVERSION);
+      member_->count_error(std::string("type ") + std::to_string(m.type) + ": " + e.what(), BridgeError::CONVERSION);
       ROS_WARN_THROTTLE(5.0, "dcdt_bridge: dropped a DCDT message of type %d: %s", m.type, e.what());
       return false;
     }
@@ -112,49 +114,49 @@ class BridgeNode {
   }
 
   template <class M>
-  void SubscribeKind(ros::NodeHandle& nh, const TopicMapping& m, int q, std::function<XmlMessage(const M&)> conv) {
+  void subscribe_kind(ros::NodeHandle& nh, const TopicMapping& m, int q, std::function<XmlMessage(const M&)> conv) {
     subs_.push_back(nh.subscribe<M>(m.topic, static_cast<uint32_t>(q),
                                     [this, m, conv](const ros::MessageEvent<M const>& ev) {
                                       if (ev.getPublisherName() == ros::this_node::getName()) return;  // our own echo
                                       try {
-                                        member_->Share(m, EncodeXml(conv(*ev.getConstMessage())));
+                                        member_->share(m, encode_xml(conv(*ev.getConstMessage())));
                                       } catch (const XmlError& e) {
-                                        member_->CountError(m.topic + ": " + e.what(), BridgeError::CONVERSION);
+                                        member_->count_error(m.topic + ": " + e.what(), BridgeError::CONVERSION);
                                         ROS_WARN_THROTTLE(5.0, "dcdt_bridge: dropped a message of %s: %s",
                                                           m.topic.c_str(), e.what());
                                       }
                                     }));
   }
 
-  void Subscribe(ros::NodeHandle& nh, const TopicMapping& m, int q) {
+  void subscribe(ros::NodeHandle& nh, const TopicMapping& m, int q) {
     switch (m.kind) {
       case PayloadKind::PERCEPT:
-        SubscribeKind<mrt_msgs::Percept>(nh, m, q, ros_conv::FromPercept);
+        subscribe_kind<mrt_msgs::Percept>(nh, m, q, ros_conv::from_percept);
         break;
       case PayloadKind::CRISP_DATA:
-        SubscribeKind<mrt_msgs::CrispDataArray>(nh, m, q, ros_conv::FromCrispData);
+        subscribe_kind<mrt_msgs::CrispDataArray>(nh, m, q, ros_conv::from_crisp_data);
         break;
       case PayloadKind::COMMANDS:
-        SubscribeKind<mrt_msgs::CommandArray>(nh, m, q, ros_conv::FromCommands);
+        subscribe_kind<mrt_msgs::CommandArray>(nh, m, q, ros_conv::from_commands);
         break;
       case PayloadKind::RAW:
         subs_.push_back(nh.subscribe<std_msgs::String>(
             m.topic, static_cast<uint32_t>(q), [this, m](const ros::MessageEvent<std_msgs::String const>& ev) {
               if (ev.getPublisherName() == ros::this_node::getName()) return;
-              member_->Share(m, ev.getConstMessage()->data);
+              member_->share(m, ev.getConstMessage()->data);
             }));
         break;
     }
   }
 
-  void Diagnostics() {
-    const AgoraStats a = agora_->Stats();
-    const BridgeStats b = member_->Stats();
+  void publish_diagnostics() {
+    const AgoraStats a = agora_->stats();
+    const BridgeStats b = member_->stats();
     diagnostic_msgs::DiagnosticArray arr;
     arr.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus st;
     st.name = ros::this_node::getName() + ": DCDT Agora";
-    st.hardware_id = "agora " + std::to_string(agora_->GetAgoraID());
+    st.hardware_id = "agora " + std::to_string(agora_->agora_id());
     int connected = 0;
     for (const auto& c : a.channels) connected += c.connected ? 1 : 0;
     const int peers = a.inner_peers + a.finder_peers + connected;
@@ -171,7 +173,7 @@ class BridgeNode {
       x.value = v;
       st.values.push_back(x);
     };
-    kv("agora_id", std::to_string(agora_->GetAgoraID()));
+    kv("agora_id", std::to_string(agora_->agora_id()));
     kv("inner_peers", std::to_string(a.inner_peers));
     kv("finder_peers", std::to_string(a.finder_peers));
     std::string ids;
@@ -211,18 +213,10 @@ class BridgeNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "dcdt_bridge");
-  ros::NodeHandle nh, pnh("~");
-  std::unique_ptr<BridgeNode> node;
-  try {
-    node = std::make_unique<BridgeNode>(nh, pnh);
-  } catch (const mrt::common::ParseError& e) {
-    ROS_FATAL("dcdt_bridge: %s", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    ROS_FATAL("dcdt_bridge: %s", e.what());
-    return 1;
-  }
-  ros::spin();
-  node.reset();
-  return 0;
+  return mrt::ros_common::run_node([] {
+    ros::NodeHandle nh, pnh("~");
+    BridgeNode node(nh, pnh);
+    ros::spin();
+    return 0;
+  });
 }

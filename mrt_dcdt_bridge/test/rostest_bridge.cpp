@@ -9,8 +9,9 @@
 #include <map>
 #include <mutex>
 
-#include "mrt_dcdt_bridge/xml_message.h"
-#include "process.h"
+#include "mrt_common_ros/rostest_helpers.h"
+#include "mrt_dcdt/xml_message.h"
+#include "mrt_dcdt/testing/process.h"
 
 using namespace mrt::dcdt;
 
@@ -18,15 +19,8 @@ namespace {
 
 std::string g_inner_dir;
 
-bool SpinUntil(const std::function<bool()>& pred, double timeout_s) {
-  ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout_s);
-  while (ros::ok() && ros::WallTime::now() < end) {
-    if (pred()) return true;
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return pred();
-}
+using mrt::ros_common::spin_for;
+using mrt::ros_common::wait_for;
 
 TEST(Bridge, LegacyPerceptsArriveAsRosMessagesWithEveryField) {
   ros::NodeHandle nh;
@@ -36,7 +30,7 @@ TEST(Bridge, LegacyPerceptsArriveAsRosMessagesWithEveryField) {
     std::lock_guard<std::mutex> l(m);
     got.push_back(*p);
   });
-  ASSERT_TRUE(SpinUntil([&] { std::lock_guard<std::mutex> l(m); return !got.empty(); }, 20.0));
+  ASSERT_TRUE(wait_for([&] { std::lock_guard<std::mutex> l(m); return !got.empty(); }, 20.0));
   std::lock_guard<std::mutex> l(m);
   const auto& p = got.front();
   // Expected values written by hand from test/data/percept_ball.xml (the DTD
@@ -116,23 +110,23 @@ std::string Unescape(const std::string& s) {
 
 TEST(Bridge, RosPerceptReachesTheLegacyAgora) {
   const std::string out = g_inner_dir + "_motion.txt";
-  dcdt_test::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_TO_MOTION", "--expect", "1",
+  mrt::dcdt::test_support::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_TO_MOTION", "--expect", "1",
                              "--duration", "30", "--out", out});
-  ASSERT_TRUE(SpinUntil([&] { return dcdt_test::Slurp(out).find("ready") != std::string::npos; }, 10.0));
+  ASSERT_TRUE(wait_for([&] { return mrt::dcdt::test_support::slurp(out).find("ready") != std::string::npos; }, 10.0));
   ros::NodeHandle nh;
   auto pub = nh.advertise<mrt_msgs::Percept>("motion/percepts", 10);
   const auto sent = SamplePercept();
-  ASSERT_TRUE(SpinUntil(
+  ASSERT_TRUE(wait_for(
       [&] {
         pub.publish(sent);
         ros::WallDuration(0.1).sleep();
-        return !dcdt_test::Lines(out, "recv ").empty();
+        return !mrt::dcdt::test_support::lines(out, "recv ").empty();
       },
       20.0));
-  auto line = dcdt_test::Lines(out, "recv ")[0];
-  EXPECT_EQ(dcdt_test::Field(line, "type"), "32");
-  EXPECT_EQ(dcdt_test::Field(line, "warranty"), "2");
-  const XmlMessage x = DecodeXml(Unescape(dcdt_test::Field(line, "payload")));
+  auto line = mrt::dcdt::test_support::lines(out, "recv ")[0];
+  EXPECT_EQ(mrt::dcdt::test_support::field(line, "type"), "32");
+  EXPECT_EQ(mrt::dcdt::test_support::field(line, "warranty"), "2");
+  const XmlMessage x = decode_xml(Unescape(mrt::dcdt::test_support::field(line, "payload")));
   EXPECT_EQ(x.sec, 1234);
   EXPECT_EQ(x.nsec, 567890123u);
   EXPECT_EQ(x.frame, "robot1/base_link");
@@ -146,31 +140,31 @@ TEST(Bridge, RosPerceptReachesTheLegacyAgora) {
   EXPECT_EQ(x.objects[0].attributes[0].variability, 0.05);
   EXPECT_EQ(x.objects[0].attributes[0].reliability, 0.75);
   EXPECT_EQ(x.objects[0].attributes[1].symbol, "left & front");
-  EXPECT_EQ(legacy.Wait(10000), 0);
+  EXPECT_EQ(legacy.wait(10000), 0);
 }
 
 TEST(Bridge, NoEchoOnATopicMappedBothWays) {
   // A legacy Agora listening to MSG_FROM_MAP: the bridge must forward our
   // three messages to DCDT (else "no echo" would hold trivially).
   const std::string out = g_inner_dir + "_map.txt";
-  dcdt_test::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_FROM_MAP", "--expect", "3",
+  mrt::dcdt::test_support::Process legacy({DCDT_AGORA, "--inner-dir", g_inner_dir, "--subscribe", "MSG_FROM_MAP", "--expect", "3",
                              "--linger", "700", "--duration", "30", "--out", out});
-  ASSERT_TRUE(SpinUntil([&] { return dcdt_test::Slurp(out).find("ready") != std::string::npos; }, 10.0));
+  ASSERT_TRUE(wait_for([&] { return mrt::dcdt::test_support::slurp(out).find("ready") != std::string::npos; }, 10.0));
   ros::NodeHandle nh;
   std::atomic<int> seen{0};
   auto sub = nh.subscribe<mrt_msgs::Percept>("map/percepts", 10, [&](const mrt_msgs::Percept::ConstPtr&) { ++seen; });
   auto pub = nh.advertise<mrt_msgs::Percept>("map/percepts", 10);
   // Wait until the bridge is connected to our publisher.
-  ASSERT_TRUE(SpinUntil([&] { return pub.getNumSubscribers() >= 2 && sub.getNumPublishers() >= 2; }, 10.0));
+  ASSERT_TRUE(wait_for([&] { return pub.getNumSubscribers() >= 2 && sub.getNumPublishers() >= 2; }, 10.0));
   for (int i = 0; i < 3; ++i) pub.publish(SamplePercept());
-  SpinUntil([] { return false; }, 1.5);
+  spin_for(1.5);
   EXPECT_EQ(seen.load(), 3);  // ours only: the bridge did not send them back
-  EXPECT_EQ(legacy.Wait(15000), 0) << dcdt_test::Slurp(out);
-  const auto recv = dcdt_test::Lines(out, "recv ");
-  ASSERT_EQ(recv.size(), 3u) << dcdt_test::Slurp(out);  // each exactly once (the linger would show more)
+  EXPECT_EQ(legacy.wait(15000), 0) << mrt::dcdt::test_support::slurp(out);
+  const auto recv = mrt::dcdt::test_support::lines(out, "recv ");
+  ASSERT_EQ(recv.size(), 3u) << mrt::dcdt::test_support::slurp(out);  // each exactly once (the linger would show more)
   for (const auto& l : recv) {
-    EXPECT_EQ(dcdt_test::Field(l, "type"), "23");
-    EXPECT_NE(dcdt_test::Field(l, "payload").find("robot1/base_link"), std::string::npos) << l;
+    EXPECT_EQ(mrt::dcdt::test_support::field(l, "type"), "23");
+    EXPECT_NE(mrt::dcdt::test_support::field(l, "payload").find("robot1/base_link"), std::string::npos) << l;
   }
 }
 
@@ -193,7 +187,7 @@ TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
       if (kv.key == k) return kv.value;
     return std::string();
   };
-  ASSERT_TRUE(SpinUntil(
+  ASSERT_TRUE(wait_for(
       [&] {
         std::lock_guard<std::mutex> l(m);
         return have && !value("in.18").empty() && value("inner_peers") != "0";
@@ -216,17 +210,17 @@ TEST(Bridge, DiagnosticsReportPeersAndTraffic) {
 
 TEST(Bridge, MalformedDcdtPayloadIsDroppedCountedAndTheNodeKeepsRunning) {
   const std::string out = g_inner_dir + "_bad.txt";
-  dcdt_test::Process bad({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--text",
+  mrt::dcdt::test_support::Process bad({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--text",
                           "<message time='1'><object name='x'></message> {i}", "--count", "3", "--rate", "50",
                           "--wait-peers", "1", "--duration", "10", "--out", out});
-  EXPECT_EQ(bad.Wait(15000), 0);
+  EXPECT_EQ(bad.wait(15000), 0);
   // Valid XML, but percepts where the mapping wants commands: the conversion
   // to ROS fails; counted apart, and never as traffic in.
   const std::string out2 = g_inner_dir + "_shape.txt";
-  dcdt_test::Process shape({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--xml",
+  mrt::dcdt::test_support::Process shape({DCDT_AGORA, "--inner-dir", g_inner_dir, "--publish", "MSG_FROM_BRIAN", "--xml",
                             DCDT_TEST_DATA "/percept_ball.xml", "--count", "2", "--rate", "50", "--wait-peers", "1",
                             "--duration", "10", "--out", out2});
-  EXPECT_EQ(shape.Wait(15000), 0);
+  EXPECT_EQ(shape.wait(15000), 0);
   ros::NodeHandle nh;
   std::mutex m;
   std::map<std::string, std::string> values;
@@ -239,7 +233,7 @@ TEST(Bridge, MalformedDcdtPayloadIsDroppedCountedAndTheNodeKeepsRunning) {
           values["level"] = std::to_string(s.level);
         }
       });
-  ASSERT_TRUE(SpinUntil(
+  ASSERT_TRUE(wait_for(
       [&] {
         std::lock_guard<std::mutex> l(m);
         return values.count("parse_errors") && values["parse_errors"] == "3" && values["conversion_errors"] == "2";

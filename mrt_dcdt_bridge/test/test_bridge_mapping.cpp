@@ -3,7 +3,7 @@
 
 #include "mrt_common/parse_error.h"
 #include "mrt_dcdt_bridge/bridge_mapping.h"
-#include "mrt_dcdt_bridge/config.h"
+#include "mrt_dcdt/config.h"
 
 using namespace mrt::dcdt;
 using mrt::common::ParseError;
@@ -11,7 +11,7 @@ using mrt::common::ParseError;
 namespace {
 
 TEST(BridgeMapping, TestMappingParses) {
-  auto m = LoadBridgeMapping(std::string(DCDT_TEST_DATA) + "/bridge_mapping.yaml");
+  auto m = load_bridge_mapping(std::string(DCDT_TEST_DATA) + "/bridge_mapping.yaml");
   ASSERT_EQ(m.to_ros.size(), 3u);
   EXPECT_EQ(m.to_ros[0].type, MSG_FROM_VISION);
   EXPECT_EQ(m.to_ros[0].topic, "vision/percepts");
@@ -42,7 +42,7 @@ TEST(BridgeMapping, Errors) {
   };
   for (const auto& c : cases) {
     try {
-      ParseBridgeMapping(c.text, "map.yaml");
+      parse_bridge_mapping(c.text, "map.yaml");
       ADD_FAILURE() << "accepted: " << c.text;
     } catch (const ParseError& e) {
       EXPECT_EQ(e.file(), "map.yaml");
@@ -57,10 +57,10 @@ TEST(BridgeMapping, Errors) {
 namespace {
 
 TEST(BridgeMapping, ShippedApplicationConfigurationParses) {
-  auto m = LoadBridgeMapping(std::string(DCDT_CONFIG_DIR) + "/bridge_mapping.yaml");
+  auto m = load_bridge_mapping(std::string(DCDT_CONFIG_DIR) + "/bridge_mapping.yaml");
   EXPECT_FALSE(m.to_ros.empty());
   EXPECT_FALSE(m.to_dcdt.empty());
-  auto c = LoadAgoraConfig(std::string(DCDT_CONFIG_DIR) + "/agora.cfg");
+  auto c = load_agora_config(std::string(DCDT_CONFIG_DIR) + "/agora.cfg");
   EXPECT_EQ(c.local_addr, "127.0.0.1");
 }
 

@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "mrt_dcdt_bridge/types.h"
+#include "mrt_dcdt/types.h"
 
 namespace mrt::dcdt {
 
 enum class PayloadKind { PERCEPT, CRISP_DATA, COMMANDS, RAW };
-const char* KindName(PayloadKind k);
+const char* kind_name(PayloadKind k);
 
 struct TopicMapping {
   int type = 0;
@@ -38,7 +38,7 @@ struct BridgeMapping {
 };
 
 /// Parses the YAML text; errors throw mrt::common::ParseError (file:line:col).
-BridgeMapping ParseBridgeMapping(const std::string& text, const std::string& file);
-BridgeMapping LoadBridgeMapping(const std::string& path);
+BridgeMapping parse_bridge_mapping(const std::string& text, const std::string& file);
+BridgeMapping load_bridge_mapping(const std::string& path);
 
 }  // namespace mrt::dcdt

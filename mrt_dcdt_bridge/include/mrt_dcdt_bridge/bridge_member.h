@@ -10,8 +10,8 @@
 #include <string>
 
 #include "mrt_dcdt_bridge/bridge_mapping.h"
-#include "mrt_dcdt_bridge/member.h"
-#include "mrt_dcdt_bridge/xml_message.h"
+#include "mrt_dcdt/member.h"
+#include "mrt_dcdt/xml_message.h"
 
 namespace mrt::dcdt {
 
@@ -30,19 +30,19 @@ class BridgeMember : public Member {
  public:
   /// xml is null for PayloadKind::RAW. Returns whether the message was
   /// delivered (false: it could not be converted, and the callback has
-  /// counted it with CountError).
+  /// counted it with count_error).
   using Deliver = std::function<bool(const TopicMapping& m, const Msg& msg, const XmlMessage* xml)>;
 
   BridgeMember(Agora* agora, BridgeMapping mapping, Deliver deliver);
-  void Init() override;
-  void DoYourJob(int pending) override;
+  void init() override;
+  void do_your_job(int pending) override;
 
   /// ROS -> DCDT: shares payload as message type m.type (thread-safe).
-  void Share(const TopicMapping& m, const std::string& payload);
+  void share(const TopicMapping& m, const std::string& payload);
   /// Records a message that could not be converted (counted, not shared).
-  void CountError(const std::string& what, BridgeError kind);
+  void count_error(const std::string& what, BridgeError kind);
 
-  BridgeStats Stats();
+  BridgeStats stats();
   const BridgeMapping& mapping() const { return mapping_; }
 
  private:

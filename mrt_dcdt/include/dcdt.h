@@ -1,0 +1,150 @@
+// The legacy DCDT API of the manual (chapter 3), so Agora programs written
+// for the original toolkit compile unchanged: DCDT_Agora, DCDT_Member,
+// DCDT_Msg with their PascalCase methods (AddMember, LetsWork, DoYourJob,
+// ShareMsg, ReadAgoraID ...), DCDT_RequestType, DCDT_LOCAL_MSG /
+// DCDT_REMOTE_MSG / DCDT_ALL_MSG, DCDT_TIME, the delivery warranties and the
+// MRT message type numbers.
+//
+// This header is the ONLY place the legacy names live: every method here is a
+// thin inline forwarder to the snake_case API of mrt_dcdt (README "Naming").
+// New code uses mrt::dcdt::Agora / Member / Msg directly.
+#pragma once
+
+#include <memory>
+
+#include "mrt_dcdt/agora.h"
+#include "mrt_dcdt/member.h"
+#include "mrt_dcdt/msg.h"
+#include "mrt_dcdt/types.h"
+
+using DCDT_RequestType = mrt::dcdt::RequestType;
+using DCDT_TIME = mrt::dcdt::DCDT_TIME;
+using mrt::dcdt::DCDT_ALL_MSG;
+using mrt::dcdt::DCDT_LOCAL_MSG;
+using mrt::dcdt::DCDT_REMOTE_MSG;
+using mrt::dcdt::DCDT_DW_GUARANTEED;
+using mrt::dcdt::DCDT_DW_NONE;
+using mrt::dcdt::DCDT_DW_RETRANSMIT;
+using mrt::dcdt::MSG_FROM_ANCHORER;
+using mrt::dcdt::MSG_FROM_BRIAN;
+using mrt::dcdt::MSG_FROM_JOYPAD_BRIEF;
+using mrt::dcdt::MSG_FROM_MAP;
+using mrt::dcdt::MSG_FROM_MONITOR;
+using mrt::dcdt::MSG_FROM_MOTION;
+using mrt::dcdt::MSG_FROM_REFBOX;
+using mrt::dcdt::MSG_FROM_SCARE;
+using mrt::dcdt::MSG_FROM_SONAR_QUALITY;
+using mrt::dcdt::MSG_FROM_VISION;
+using mrt::dcdt::MSG_FROM_VISION_FRONTAL;
+using mrt::dcdt::MSG_FROM_VISION_OMNIDIR;
+using mrt::dcdt::MSG_TO_ANCHORER;
+using mrt::dcdt::MSG_TO_BRIAN;
+using mrt::dcdt::MSG_TO_MOTION;
+
+/// DCDT_Agora (manual §3.3.1): an mrt::dcdt::Agora with the legacy names.
+class DCDT_Agora : public mrt::dcdt::Agora {
+ public:
+  DCDT_Agora() = default;  // STANDALONE
+  using mrt::dcdt::Agora::Agora;  // DCDT_Agora("dcdt.cfg"): NETWORK; or from AgoraOptions
+
+  void AddMember(mrt::dcdt::Member* m) { add_member(m); }
+  void ActivateMember(mrt::dcdt::Member* m) { activate_member(m); }
+  void LetsWork() { lets_work(); }
+  void Shutdown() { shutdown(); }
+  int GetAgoraID() const { return agora_id(); }
+};
+
+class DCDT_Member;
+
+/// DCDT_Msg (manual §3.3.3): a handle on an mrt::dcdt::Msg. One made by
+/// CreateMsg owns its message until ShareMsg (or delete); the one ReceiveMsg
+/// returns views the current message and belongs to the Member.
+class DCDT_Msg {
+ public:
+  int ReadType() const { return msg_->type(); }
+  int ReadMemberID() const { return msg_->member_id(); }
+  int ReadAgoraID() const { return msg_->agora_id(); }
+  int ReadPriority() const { return msg_->priority(); }
+  int ReadDeliveryWarranty() const { return msg_->delivery_warranty(); }
+  DCDT_TIME ReadCreationTime() const { return msg_->creation_time(); }
+  int ReadPayloadLen() const { return msg_->payload_len(); }
+  void* GetPayload() { return msg_->payload(); }
+  const void* GetPayload() const { return static_cast<const mrt::dcdt::Msg*>(msg_)->payload(); }
+  void SetPayload(const void* data, int len) { msg_->set_payload(data, len); }
+  void* AllocPayload(int len) { return msg_->alloc_payload(len); }
+  void SetPriority(int p) { msg_->set_priority(p); }
+
+  /// The message itself, for code that mixes both APIs.
+  mrt::dcdt::Msg& msg() { return *msg_; }
+
+ private:
+  friend class DCDT_Member;
+  DCDT_Msg(mrt::dcdt::Msg* m, bool owned) : msg_(m), owned_(owned ? m : nullptr) {}
+  mrt::dcdt::Msg* msg_;
+  std::unique_ptr<mrt::dcdt::Msg> owned_;  // null for a received message
+};
+
+/// DCDT_Member (manual §3.3.2): derive from it and override Init, Close and
+/// DoYourJob; the snake_case hooks of mrt::dcdt::Member call them.
+class DCDT_Member : public mrt::dcdt::Member {
+ public:
+  /// Cyclic or message-driven Member.
+  explicit DCDT_Member(DCDT_Agora* agora) : mrt::dcdt::Member(agora) {}
+  /// Periodic Member: DoYourJob every period_ms milliseconds.
+  DCDT_Member(DCDT_Agora* agora, int period_ms) : mrt::dcdt::Member(agora, period_ms) {}
+
+  virtual void Init() {}
+  virtual void Close() {}
+  virtual void DoYourJob(int n) = 0;
+
+  void SubscribeMsgType(int type, DCDT_RequestType req = DCDT_ALL_MSG) { subscribe_msg_type(type, req); }
+  void UnSubscribeMsgType(int type, DCDT_RequestType req = DCDT_ALL_MSG) { unsubscribe_msg_type(type, req); }
+  void UnSubscribeAll() { unsubscribe_all(); }
+
+  DCDT_Msg* CreateMsg(int type, int delivery_warranty) {
+    return new DCDT_Msg(create_msg(type, delivery_warranty), true);
+  }
+  DCDT_Msg* CreateMsg(int type) { return new DCDT_Msg(create_msg(type), true); }
+  /// Shares a message made by CreateMsg (and deletes its handle), or a copy
+  /// of the current received message.
+  void ShareMsg(DCDT_Msg* msg) {
+    if (!msg) return;
+    if (msg == current_.get()) {
+      share_msg(new mrt::dcdt::Msg(*msg->msg_));
+      return;
+    }
+    std::unique_ptr<DCDT_Msg> handle(msg);
+    share_msg(handle->owned_ ? handle->owned_.release() : new mrt::dcdt::Msg(*handle->msg_));
+  }
+  DCDT_Msg* ReceiveMsg() {
+    mrt::dcdt::Msg* m = receive_msg();
+    current_.reset(m ? new DCDT_Msg(m, false) : nullptr);
+    return current_.get();
+  }
+  void RemoveCurrMsg() {
+    current_.reset();
+    remove_curr_msg();
+  }
+
+  void Shutdown() { shutdown(); }
+  void Terminate() { terminate(); }
+  mrt::dcdt::MemberState GetState() const { return state(); }
+  int GetMemberID() const { return member_id(); }
+  int GetPeriod() const { return period_ms(); }
+  /// The Agora this Member was constructed with (always a DCDT_Agora).
+  DCDT_Agora* GetAgora() const { return static_cast<DCDT_Agora*>(agora()); }
+
+ protected:
+  /// For legacy default constructors; the Agora is set by AddMember.
+  DCDT_Member() = default;
+
+ private:
+  void init() final { Init(); }
+  void close() final {
+    Close();
+    current_.reset();
+  }
+  void do_your_job(int n) final { DoYourJob(n); }
+
+  std::unique_ptr<DCDT_Msg> current_;
+};

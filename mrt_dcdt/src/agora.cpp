@@ -1,0 +1,306 @@
+#include "mrt_dcdt/agora.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <random>
+
+#include "finder.h"
+#include "inner_link_manager.h"
+
+namespace mrt::dcdt {
+
+namespace {
+int random_agora_id() {
+  std::random_device rd;
+  uint32_t v = rd() ^ (static_cast<uint32_t>(::getpid()) << 16) ^
+               static_cast<uint32_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+  v &= 0x7fffffff;
+  return v == 0 ? 1 : static_cast<int>(v);
+}
+
+uint64_t random_incarnation() {
+  std::random_device rd;
+  uint64_t v = (static_cast<uint64_t>(rd()) << 32) ^ rd() ^
+               static_cast<uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+  return v == 0 ? 1 : v;
+}
+
+AgoraOptions NetworkOptions(const std::string& file) {
+  AgoraOptions o;
+  o.network = true;
+  o.config = load_agora_config(file);
+  return o;
+}
+}  // namespace
+
+Agora::Agora() : Agora(AgoraOptions{}) {}
+Agora::Agora(const char* config_file) : Agora(NetworkOptions(config_file ? config_file : "")) {}
+Agora::Agora(const std::string& config_file) : Agora(NetworkOptions(config_file)) {}
+Agora::Agora(AgoraOptions options) : options_(std::move(options)) { setup(); }
+
+std::string default_inner_dir() {
+  if (const char* d = std::getenv("DCDT_INNER_DIR"); d && *d) return d;
+  return "/tmp/dcdt-" + std::to_string(::getuid());
+}
+
+void Agora::setup() {
+  agora_id_ = options_.agora_id > 0 ? options_.agora_id : random_agora_id();
+  incarnation_ = random_incarnation();
+  options_.channel.agora_id = agora_id_;
+  options_.channel.incarnation = incarnation_;
+  post_office_ = PostOffice::create(options_.config.policy);
+  post_office_->agora_id = agora_id_;
+  if (options_.inner_links) {
+    if (options_.inner_dir.empty()) options_.inner_dir = default_inner_dir();
+    inner_ = std::make_unique<InnerLinkManager>(
+        options_.inner_dir, agora_id_, [this](std::shared_ptr<Msg> m) { route(std::move(m), Source{Source::INNER, nullptr}); });
+    inner_->start();
+  }
+  if (!options_.network) return;
+  auto rx = [this](std::shared_ptr<Msg> m, Channel* ch) { route(std::move(m), Source{Source::CHANNEL, ch}); };
+  for (const auto& c : options_.config.channels) {
+    auto ch = c.kind == ChannelConfig::IP ? make_ip_channel(c, options_.channel, rx)
+                                          : make_serial_channel(c, options_.channel, rx);
+    ch->start();
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    channels_.push_back(std::move(ch));
+  }
+  if (options_.finder && options_.config.port > 0) {
+    finder_ = std::make_unique<Finder>(this, options_.config, options_.inner_dir, options_.finder_period_ms);
+    finder_->start();
+  }
+}
+
+Agora::~Agora() {
+  shutdown();
+  {
+    std::unique_lock<std::mutex> l(members_mutex_);
+    members_cv_.wait_for(l, std::chrono::seconds(10), [&] { return !running_; });
+  }
+  stop_network();
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (Member* m : members_) {
+    if (m->thread_.joinable()) m->thread_.join();
+    if (m->registered_) post_office_->unregister_mailbox(&m->mailbox_);
+    m->registered_ = false;
+    m->agora_ = nullptr;  // the Member may outlive its Agora
+  }
+  members_.clear();
+}
+
+void Agora::remove_member(Member* m) {
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (auto it = members_.begin(); it != members_.end(); ++it) {
+    if (*it != m) continue;
+    if (m->registered_) post_office_->unregister_mailbox(&m->mailbox_);
+    m->registered_ = false;
+    members_.erase(it);
+    break;
+  }
+}
+
+void Agora::stop_network() {
+  if (finder_) finder_->stop();
+  std::vector<std::unique_ptr<Channel>> chans;
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    chans.swap(channels_);
+  }
+  for (auto& c : chans) c->stop();
+  chans.clear();
+  if (inner_) inner_->stop();
+  finder_.reset();
+  inner_.reset();
+}
+
+void Agora::add_member(Member* m) {
+  if (!m) return;
+  std::lock_guard<std::mutex> l(members_mutex_);
+  for (Member* x : members_)
+    if (x == m) return;
+  m->agora_ = this;
+  m->member_id_ = next_member_id();
+  m->mailbox_.member_id = m->member_id_;
+  post_office_->register_mailbox(&m->mailbox_);
+  m->registered_ = true;
+  m->state_ = MemberState::ADDED;
+  members_.push_back(m);
+}
+
+void Agora::activate_member(Member* m) {
+  bool start_now = false;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    if (!m || m->agora_ != this || m->state_ != MemberState::ADDED) return;
+    m->state_ = MemberState::ACTIVE;
+    start_now = running_;
+  }
+  if (start_now) {
+    m->init();
+    std::lock_guard<std::mutex> l(members_mutex_);
+    m->state_ = MemberState::RUNNING;
+    m->thread_ = std::thread([this, m] { m->run(&stop_); });
+  }
+}
+
+void Agora::lets_work() {
+  std::vector<Member*> to_start;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    if (running_) return;
+    running_ = true;
+    for (Member* m : members_)
+      if (m->state_ == MemberState::ACTIVE) to_start.push_back(m);
+  }
+  // init() of every Member first, so subscriptions exist before anyone shares.
+  for (Member* m : to_start) m->init();
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    for (Member* m : to_start) {
+      m->state_ = MemberState::RUNNING;
+      m->thread_ = std::thread([this, m] { m->run(&stop_); });
+    }
+  }
+  {
+    std::unique_lock<std::mutex> l(members_mutex_);
+    auto done = [&] {
+      if (shutdown_) return true;
+      for (Member* m : members_) {
+        auto s = m->state_.load();
+        if (s == MemberState::RUNNING || s == MemberState::ACTIVE) return false;
+      }
+      return true;
+    };
+    while (!done()) members_cv_.wait_for(l, std::chrono::milliseconds(100));
+  }
+  stop_ = true;
+  post_office_->wake_all();
+  std::vector<Member*> all;
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    all = members_;
+  }
+  for (Member* m : all)
+    if (m->thread_.joinable()) m->thread_.join();
+  {
+    std::lock_guard<std::mutex> l(members_mutex_);
+    running_ = false;
+  }
+  members_cv_.notify_all();
+}
+
+void Agora::shutdown() {
+  shutdown_ = true;
+  stop_ = true;
+  notify_state_change();
+  if (post_office_) post_office_->wake_all();
+}
+
+void Agora::notify_state_change() {
+  { std::lock_guard<std::mutex> l(members_mutex_); }
+  members_cv_.notify_all();
+}
+
+bool Agora::seen_before(const MsgHeader& h) {
+  const Origin key{h.agora_id, h.incarnation, h.seq};
+  std::lock_guard<std::mutex> l(seen_mutex_);
+  if (!seen_.insert(key).second) return true;
+  seen_order_.push_back(key);
+  if (seen_order_.size() > 200000) {
+    seen_.erase(seen_order_.front());
+    seen_order_.pop_front();
+  }
+  return false;
+}
+
+void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
+  auto& h = msg->mutable_header();
+  if (src.kind != Source::MEMBER) {
+    if (h.agora_id == agora_id_ || seen_before(h)) {
+      ++duplicates_;  // our own message came back, or a copy by another path
+      return;
+    }
+    if (src.kind == Source::CHANNEL) {
+      h.hops = static_cast<uint8_t>(h.hops + 1);
+      h.remote = src.channel->mode == ChannelMode::LINK;
+    }
+    if (h.hops > kMaxHops) {
+      ++hop_limited_;
+      return;
+    }
+  }
+  ++routed_;
+  MsgPtr m = std::move(msg);
+  post_office_->post(m);
+  if (inner_ && src.kind != Source::INNER) inner_->send(*m);
+  std::lock_guard<std::mutex> l(channels_mutex_);
+  for (auto& ch : channels_) {
+    if (ch.get() == src.channel || ch->dead()) continue;
+    if (src.kind == Source::MEMBER ||
+        (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level))
+      ch->send(m);
+  }
+}
+
+void Agora::add_channel(std::unique_ptr<Channel> c) {
+  std::vector<std::unique_ptr<Channel>> dead;
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    for (auto it = channels_.begin(); it != channels_.end();) {
+      if ((*it)->dead()) {
+        dead.push_back(std::move(*it));
+        it = channels_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (c) {
+      c->start();
+      channels_.push_back(std::move(c));
+    }
+  }
+  for (auto& d : dead) d->stop();
+}
+
+bool Agora::has_connected_peer(int id) {
+  std::lock_guard<std::mutex> l(channels_mutex_);
+  for (auto& c : channels_) {
+    if (c->dead()) continue;
+    auto s = c->stats();
+    if (s.connected && s.peer_agora == id) return true;
+  }
+  return false;
+}
+
+AgoraStats Agora::stats() {
+  AgoraStats s;
+  s.routed = routed_;
+  s.duplicates = duplicates_;
+  s.hop_limited = hop_limited_;
+  s.mailbox_dropped = post_office_->mailbox_drops();
+  if (inner_) {
+    s.peer_ids = inner_->peer_ids();
+    s.inner_peers = static_cast<int>(s.peer_ids.size());
+    s.inner_errors = inner_->errors();
+  }
+  if (finder_) {
+    auto f = finder_->peer_ids();
+    s.finder_peers = static_cast<int>(f.size());
+    s.peer_ids.insert(s.peer_ids.end(), f.begin(), f.end());
+  }
+  {
+    std::lock_guard<std::mutex> l(channels_mutex_);
+    for (auto& c : channels_) {
+      s.channels.push_back(c->stats());
+      if (s.channels.back().peer_agora) s.peer_ids.push_back(s.channels.back().peer_agora);
+    }
+  }
+  std::sort(s.peer_ids.begin(), s.peer_ids.end());
+  s.peer_ids.erase(std::unique(s.peer_ids.begin(), s.peer_ids.end()), s.peer_ids.end());
+  return s;
+}
+
+}  // namespace mrt::dcdt

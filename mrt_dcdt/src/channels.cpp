@@ -1,0 +1,176 @@
+// Channel implementations (manual's LinkRx / LinkTx): `ip` channels (a
+// StreamLink over TCP for guaranteed messages and big ones, a UdpLink for the
+// rest) and stream channels (serial lines, Finder connections). The links
+// themselves are in stream_link.cpp and udp_link.cpp. See README "Wire protocol".
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include "mrt_dcdt/channel.h"
+#include "stream_link.h"
+#include "udp_link.h"
+
+namespace mrt::dcdt {
+
+namespace {
+
+using link::kGiveUp;
+using link::StreamLink;
+using link::UdpLink;
+constexpr size_t kMaxUdpFrame = 60000;
+
+// ---------------------------------------------------------------- channels
+class IpChannel : public Channel {
+ public:
+  IpChannel(const ChannelConfig& cfg, const ChannelOptions& o, ReceiveFn rx) : cfg_(cfg) {
+    mode = cfg.mode;
+    level = cfg.level;
+    const bool dial = std::make_pair(ntohl(Addr(cfg.local_addr)), cfg.local_port) <
+                      std::make_pair(ntohl(Addr(cfg.remote_addr)), cfg.remote_port);
+    StreamLink::ConnectFn fn;
+    if (dial) {
+      fn = [this](const std::atomic<bool>&) {
+        return net::tcp_connect(cfg_.local_addr, cfg_.remote_addr, cfg_.remote_port, 200);
+      };
+    } else {
+      fn = [this](const std::atomic<bool>&) {
+        if (listen_fd_ < 0) listen_fd_ = net::tcp_listen(cfg_.local_addr, cfg_.local_port);
+        if (listen_fd_ < 0) return -1;
+        sockaddr_in peer{};
+        int fd = net::tcp_accept(listen_fd_, 100, &peer);
+        if (fd >= 0 && peer.sin_addr.s_addr != Addr(cfg_.remote_addr)) {
+          ::close(fd);  // only the configured peer may connect
+          return -1;
+        }
+        return fd;
+      };
+    }
+    stream_ = std::make_unique<StreamLink>(o, fn, this, rx, /*lossy=*/false);
+    udp_ = std::make_unique<UdpLink>(cfg, o, this, rx);
+  }
+  ~IpChannel() override { stop(); }
+  void start() override {
+    stream_->start();
+    udp_->start();
+  }
+  void stop() override {
+    stream_->stop();
+    udp_->stop();
+    if (listen_fd_ >= 0) ::close(listen_fd_);
+    listen_fd_ = -1;
+  }
+  void send(const MsgPtr& m) override {
+    if (m->delivery_warranty() == DCDT_DW_GUARANTEED ||
+        static_cast<size_t>(m->payload_len()) + kMsgBodyFixed + kFrameOverhead > kMaxUdpFrame)
+      stream_->send(m);  // too big for a datagram: the stream carries it
+    else
+      udp_->send(m);
+  }
+  ChannelStats stats() const override {
+    ChannelStats s;
+    s.name = std::string(mode == ChannelMode::LINK ? "ip link " : "ip bridge ") + cfg_.local_addr + ":" +
+             std::to_string(cfg_.local_port) + " -> " + cfg_.remote_addr + ":" + std::to_string(cfg_.remote_port);
+    stream_->c.fill(&s);
+    udp_->c.fill(&s);
+    s.connected = stream_->c.connected;
+    s.pending = stream_->pending() + udp_->pending();
+    return s;
+  }
+
+ private:
+  static in_addr_t Addr(const std::string& ip) {
+    sockaddr_in a;
+    net::make_addr(ip, 0, &a);
+    return a.sin_addr.s_addr;
+  }
+  ChannelConfig cfg_;
+  int listen_fd_ = -1;
+  std::unique_ptr<StreamLink> stream_;
+  std::unique_ptr<UdpLink> udp_;
+};
+
+class StreamChannel : public Channel {
+ public:
+  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx, bool lossy)
+      : name_(std::move(name)) {
+    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), lossy);
+  }
+  ~StreamChannel() override { stop(); }
+  void start() override { stream_->start(); }
+  void stop() override { stream_->stop(); }
+  void send(const MsgPtr& m) override { stream_->send(m); }
+  bool dead() const override { return stream_->dead(); }
+  ChannelStats stats() const override {
+    ChannelStats s;
+    s.name = name_;
+    stream_->c.fill(&s);
+    s.pending = stream_->pending();
+    return s;
+  }
+
+ private:
+  std::string name_;
+  std::unique_ptr<StreamLink> stream_;
+};
+
+int open_serial(const std::string& dev) {
+  int fd = ::open(dev.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  if (::isatty(fd)) {
+    termios t{};
+    if (tcgetattr(fd, &t) == 0) {
+      cfmakeraw(&t);
+      cfsetispeed(&t, B115200);
+      cfsetospeed(&t, B115200);
+      t.c_cflag |= CLOCAL | CREAD;
+      tcsetattr(fd, TCSANOW, &t);
+    }
+  }
+  return fd;
+}
+
+}  // namespace
+
+std::unique_ptr<Channel> make_ip_channel(const ChannelConfig& c, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  return std::make_unique<IpChannel>(c, o, std::move(rx));
+}
+
+std::unique_ptr<Channel> make_serial_channel(const ChannelConfig& c, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  std::string dev = c.device;
+  auto ch = std::make_unique<StreamChannel>(
+      std::string(c.mode == ChannelMode::LINK ? "ser link " : "ser bridge ") + dev, o,
+      [dev](const std::atomic<bool>&) { return open_serial(dev); }, std::move(rx), /*lossy=*/true);
+  ch->mode = c.mode;
+  ch->level = c.level;
+  return ch;
+}
+
+std::unique_ptr<Channel> make_dialled_tcp_channel(const std::string& addr, int port, const ChannelOptions& o,
+                                               Channel::ReceiveFn rx) {
+  auto used = std::make_shared<bool>(false);
+  auto ch = std::make_unique<StreamChannel>(
+      "finder -> " + addr + ":" + std::to_string(port), o,
+      [addr, port, used](const std::atomic<bool>&) {
+        if (*used) return kGiveUp;
+        *used = true;
+        int fd = net::tcp_connect("", addr, port, 500);
+        return fd < 0 ? kGiveUp : fd;
+      },
+      std::move(rx), /*lossy=*/false);
+  return ch;
+}
+
+std::unique_ptr<Channel> make_accepted_tcp_channel(int fd, const ChannelOptions& o, Channel::ReceiveFn rx) {
+  auto used = std::make_shared<bool>(false);
+  return std::make_unique<StreamChannel>(
+      "finder <- accepted", o,
+      [fd, used](const std::atomic<bool>&) {
+        if (*used) return kGiveUp;
+        *used = true;
+        return fd;
+      },
+      std::move(rx), /*lossy=*/false);
+}
+
+}  // namespace mrt::dcdt

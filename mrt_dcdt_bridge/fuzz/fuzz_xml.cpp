@@ -1,4 +1,0 @@
-// libFuzzer entry point (clang, -DDCDT_FUZZ=ON): see fuzz_targets.h.
-#include "fuzz_targets.h"
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return dcdt_fuzz::FuzzXml(data, size); }
