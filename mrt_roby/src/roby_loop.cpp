@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -50,6 +52,45 @@ double world_clearance(const void* world_ptr, double x, double y, double radius,
   return best;
 }
 
+namespace {
+
+/// Mr. BRIAN's side of one cycle: the crisp data in, the previous commands
+/// fed back (LastSpeed, LastJog), the commands mapped to a body twist as the
+/// AIRBoard maps them (unicycle: Speed cm/s, Jog deg/s).
+class BrianCycle {
+ public:
+  explicit BrianCycle(const std::string& dir) : brian_(brian::Brian::from_path(dir)) {}
+
+  std::optional<common::Twist2D> run(CrispInputs in) {
+    in.last_speed_cm = last_speed_;
+    in.last_jog_deg = last_jog_;
+    crisp_ = build_crisp(in);
+    last_speed_ = last_jog_ = 0.0;
+    commands_.clear();
+    for (const auto& cmd : brian_->run(crisp_)) {
+      if (cmd.name == "Speed") last_speed_ = cmd.value;
+      if (cmd.name == "Jog") last_jog_ = cmd.value;
+      commands_.emplace_back(cmd.name, cmd.value);
+    }
+    return mapping_.to_twist(commands_);
+  }
+
+  void print(double now, const Pose2D& truth) const {
+    std::printf("%7.2f pose %6.2f %6.2f %6.1f |", now, truth.x, truth.y, common::rad_to_deg(truth.theta));
+    for (const auto& x : crisp_) std::printf(" %s=%.0f", x.name.c_str(), x.value);
+    std::printf(" | Speed %.1f Jog %.1f\n", last_speed_, last_jog_);
+  }
+
+ private:
+  std::unique_ptr<brian::Brian> brian_;
+  const airboard::BrianMapping mapping_{airboard::BrianMappingParams{}};
+  CrispDataList crisp_;
+  std::vector<std::pair<std::string, double>> commands_;
+  double last_speed_ = 0.0, last_jog_ = 0.0;
+};
+
+}  // namespace
+
 RobyLoopResult run_roby_loop(const RobyLoopOptions& o,
                              const std::function<void(double, const RobyLoopResult&)>& tick) {
   sim::Simulator simulator(sim::load_world(o.world), 0.001);
@@ -57,7 +98,7 @@ RobyLoopResult run_roby_loop(const RobyLoopOptions& o,
   const sim::RobotConfig& rc = simulator.robots()[r].config;
   RoutePlanner planner(load_road_map(o.map));
   Sequencer seq(load_sequencer_options(o.tasks));
-  auto brian = brian::Brian::from_path(o.brian);
+  BrianCycle brian(o.brian);
   std::vector<double> mounts;
   for (const auto& s : rc.sensors.sonars) mounts.push_back(common::rad_to_deg(s.mount.theta));
   const double max_range = rc.sensors.sonars.empty() ? 5.0 : rc.sensors.sonars[0].max_range;
@@ -81,10 +122,6 @@ RobyLoopResult run_roby_loop(const RobyLoopOptions& o,
 
   const bool debug = std::getenv("ROBY_DEBUG") != nullptr;
   const std::uint64_t brian_period = simulator.period(o.brian_rate);
-  // Speed (cm/s) and Jog (deg/s) to the body twist, as the AIRBoard reads them.
-  const airboard::BrianMapping mapping{airboard::BrianMappingParams{}};  // unicycle: Speed, Jog
-  std::vector<std::pair<std::string, double>> commands;
-  double last_speed = 0.0, last_jog = 0.0;
   std::vector<std::string> names;
   for (const auto& s : sectors.sectors()) names.push_back(s.name);
   while (simulator.time() < o.duration) {
@@ -110,24 +147,8 @@ RobyLoopResult run_roby_loop(const RobyLoopOptions& o,
     in.mode = seq.mode();
     in.sector_names = names;
     in.sector_distances = sectors.distances();
-    in.last_speed_cm = last_speed;
-    in.last_jog_deg = last_jog;
-    const brian::CrispDataList crisp = build_crisp(in);
-    const brian::CommandList& cmds = brian->run(crisp);
-    last_speed = 0.0;
-    last_jog = 0.0;
-    commands.clear();
-    for (const auto& cmd : cmds) {
-      if (cmd.name == "Speed") last_speed = cmd.value;
-      if (cmd.name == "Jog") last_jog = cmd.value;
-      commands.emplace_back(cmd.name, cmd.value);
-    }
-    if (const auto twist = mapping.to_twist(commands)) simulator.set_twist(r, {twist->vx, twist->vy, twist->omega});
-    if (debug) {
-      std::printf("%7.2f pose %6.2f %6.2f %6.1f |", now, st.pose.x, st.pose.y, common::rad_to_deg(st.pose.theta));
-      for (const auto& x : crisp) std::printf(" %s=%.0f", x.name.c_str(), x.value);
-      std::printf(" | Speed %.1f Jog %.1f\n", last_speed, last_jog);
-    }
+    if (const auto twist = brian.run(in)) simulator.set_twist(r, {twist->vx, twist->vy, twist->omega});
+    if (debug) brian.print(now, st.pose);
     res.reached = seq.reached();
     res.failed = seq.failed();
     res.replans = seq.replans();
