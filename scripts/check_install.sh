@@ -3,9 +3,10 @@
 # and its dependencies into a scratch build, devel and install space (under
 # build/check_install), installs them, and in a clean environment that knows
 # only the install space runs `roslaunch mrt_roby roby.launch rviz:=false`
-# for a few seconds. Passes (exit 0) when the bringup's nodes come up and
-# Mr. BRIAN's commands and the AIRBoard's wheel commands are published;
-# exit 1 otherwise (the roslaunch log is printed).
+# for a few seconds. Passes (exit 0) when the bringup's nodes come up, Mr.
+# BRIAN's commands and the AIRBoard's wheel commands are published and SCARE
+# runs the route (it has the plan and the localizer's pose); exit 1
+# otherwise, with the end of the roslaunch log.
 #   ./scripts/check_install.sh [NAME:=VALUE ...]   extra roslaunch arguments
 #   PACKAGES="a b"  build these and their dependencies (default: mrt_roby)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -25,8 +26,8 @@ catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo
 env -i HOME="$HOME" PATH=/usr/bin:/bin LANG=C.UTF-8 ROS_HOME="$WORK/ros_home" \
   ROS_MASTER_URI="http://127.0.0.1:$(free_port)" INSTALL="$WORK/install" LOG="$WORK/roslaunch.log" \
   bash -s -- "$@" <<'CHECK'
-set -u
 source "$INSTALL/setup.bash"
+set -u
 fail() { echo "check_install: $*" >&2; tail -30 "$LOG" >&2; exit 1; }
 where=$(rospack find mrt_roby) || fail "mrt_roby is not in the install space"
 [ "$where" = "$INSTALL/share/mrt_roby" ] || fail "mrt_roby found at $where, not in $INSTALL"
@@ -39,12 +40,15 @@ until timeout 20 rostopic echo -n 1 /clock >/dev/null 2>&1; do
   [ "$SECONDS" -lt "$deadline" ] || fail "no /clock after 90 s"
   sleep 1
 done
-for topic in /robot1/commands /robot1/wheel_cmd /robot1/pose /robot1/task_status; do
+for topic in /robot1/commands /robot1/wheel_cmd; do
   timeout 30 rostopic echo -n 1 "$topic" >/dev/null 2>&1 || fail "nothing published on $topic"
 done
+# SCARE runs a plan only once the localizer's pose has arrived.
+timeout 30 rostopic echo -n 1 --filter "m.state == m.RUNNING" /robot1/task_status >/dev/null 2>&1 ||
+  fail "SCARE is not running the route (no plan, or no pose from the localizer)"
 nodes=$(rosnode list)
 for n in /sim /robot1/route_planner /robot1/dgps_localizer /robot1/scare /robot1/sonar_crisp /robot1/brian \
-         /robot1/airboard /robot1/airboard_emulator /clearance_monitor; do
+         /robot1/airboard /clearance_monitor; do
   grep -qx "$n" <<<"$nodes" || fail "node $n is not running"
 done
 kill -0 $launch 2>/dev/null || fail "roslaunch ended early"
