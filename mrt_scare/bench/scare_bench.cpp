@@ -1,9 +1,8 @@
-// scare_bench: sequencer update cost and Roby closed-loop speed, printed as
+// scare_bench: sequencer update cost, printed as
 // `name: value unit`, with an in-run baseline ratio (scripts/bench.sh).
 #include <chrono>
 #include <cstdio>
 
-#include "mrt_scare/roby_loop.h"
 #include "mrt_scare/sequencer.h"
 
 using Clock = std::chrono::steady_clock;
@@ -31,18 +30,5 @@ int main() {
   std::printf("sequencer_update: %.1f ns\n", seq_ns);
   std::printf("sequencer_update_over_distance_baseline: %.1f ratio\n", seq_ns / base_ns);
   std::printf("sequencer_events: %zu count\n", events + (acc < 0 ? 1 : 0));
-
-  RobyLoopOptions o;
-  const std::string root = MRT_SCARE_ROOT;
-  o.world = root + "/mrt_scare/test/data/roby_route.yaml";
-  o.map = root + "/mrt_scare/test/data/roby_route_map.yaml";
-  o.tasks = root + "/config/roby/tasks.yaml";
-  o.brian = root + "/config/roby/brian";
-  t0 = Clock::now();
-  const auto r = run_roby_loop(o);
-  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  std::printf("roby_loop_sim_seconds: %.1f s\n", r.time);
-  std::printf("roby_loop_real_time_factor: %.1f ratio\n", r.time / wall);
-  std::printf("roby_loop_min_clearance: %.3f m\n", r.min_clearance);
   return 0;
 }
