@@ -1,30 +1,38 @@
 #!/usr/bin/env bash
-# Checks that `catkin_make install` produces a working Roby: builds mrt_roby
-# and its dependencies into a scratch build, devel and install space (under
-# build/check_install), installs them, and in a clean environment that knows
-# only the install space runs `roslaunch mrt_roby roby.launch rviz:=false`
-# for a few seconds. Passes (exit 0) when the bringup's nodes come up, Mr.
-# BRIAN's commands and the AIRBoard's wheel commands are published and SCARE
-# runs the route (it has the plan and the localizer's pose); exit 1
-# otherwise, with the end of the roslaunch log.
+# Checks that `catkin_make install` produces a working Roby. Installs the
+# workspace (the build that scripts/test.sh made, so nothing is compiled
+# again; with SCRATCH=1 a separate build of mrt_roby and its dependencies
+# under build/check_install) and, in a clean environment that knows only the
+# install space, runs `roslaunch mrt_roby roby.launch rviz:=false` for a few
+# seconds. Passes (exit 0) when the bringup's nodes come up, Mr. BRIAN's
+# commands and the AIRBoard's wheel commands are published and SCARE runs the
+# route (it has the plan and the localizer's pose); exit 1 otherwise, with
+# the end of the roslaunch log.
 #   ./scripts/check_install.sh [NAME:=VALUE ...]   extra roslaunch arguments
-#   PACKAGES="a b"  build these and their dependencies (default: mrt_roby)
+#   SCRATCH=1 PACKAGES="a b"  scratch build of these and their dependencies
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 WORK="$ROOT/build/check_install"
-PACKAGES="${PACKAGES:-mrt_roby}"
-rm -rf "$WORK/install"
 mkdir -p "$WORK/ros_home"
 cd "$ROOT"
-# shellcheck disable=SC2086
-catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo}" \
-  --build "$WORK/build" -DCATKIN_DEVEL_PREFIX="$WORK/devel" -DCMAKE_INSTALL_PREFIX="$WORK/install" \
-  --only-pkg-with-deps $PACKAGES -j"$JOBS" install >"$WORK/build.log" 2>&1 ||
-  { tail -30 "$WORK/build.log" >&2; echo "check_install: build or install failed ($WORK/build.log)" >&2; exit 1; }
+if [ "${SCRATCH:-0}" = 1 ]; then
+  INSTALL_DIR="$WORK/install"
+  rm -rf "$INSTALL_DIR"
+  # shellcheck disable=SC2086
+  catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo}" \
+    --build "$WORK/build" -DCATKIN_DEVEL_PREFIX="$WORK/devel" -DCMAKE_INSTALL_PREFIX="$INSTALL_DIR" \
+    --only-pkg-with-deps ${PACKAGES:-mrt_roby} -j"$JOBS" install >"$WORK/build.log" 2>&1 ||
+    { tail -30 "$WORK/build.log" >&2; echo "check_install: build or install failed ($WORK/build.log)" >&2; exit 1; }
+else
+  INSTALL_DIR="$ROOT/install"
+  rm -rf "$INSTALL_DIR"
+  build_workspace install >"$WORK/build.log" 2>&1 ||
+    { tail -30 "$WORK/build.log" >&2; echo "check_install: install failed ($WORK/build.log)" >&2; exit 1; }
+fi
 
 # The check itself, with nothing of the source or devel space in sight.
 env -i HOME="$HOME" PATH=/usr/bin:/bin LANG=C.UTF-8 ROS_HOME="$WORK/ros_home" \
-  ROS_MASTER_URI="http://127.0.0.1:$(free_port)" INSTALL="$WORK/install" LOG="$WORK/roslaunch.log" \
+  ROS_MASTER_URI="http://127.0.0.1:$(free_port)" INSTALL="$INSTALL_DIR" LOG="$WORK/roslaunch.log" \
   bash -s -- "$@" <<'CHECK'
 source "$INSTALL/setup.bash"
 set -u

@@ -2,7 +2,7 @@
 """Checks that the C++ sources of the stack stay readable: no file longer
 than --max-file lines and no function body longer than --max-function lines.
 
-usage: check_sizes.py [--max-file N] [--max-function N] [--junit FILE] DIR...
+usage: check_sizes.py [--max-file N] [--max-function N] DIR...
 
 Functions are found by brace matching on the source with comments, strings
 and character literals blanked out: a brace that opens a body whose header
@@ -15,7 +15,6 @@ import argparse
 import os
 import re
 import sys
-from xml.sax.saxutils import escape
 
 SOURCE_EXT = (".cpp", ".cc", ".h", ".hpp")
 SKIP_DIRS = {"build", "devel", "install", ".git", "node_modules"}
@@ -111,7 +110,6 @@ def main():
     ap.add_argument("dirs", nargs="+")
     ap.add_argument("--max-file", type=int, default=500)
     ap.add_argument("--max-function", type=int, default=80)
-    ap.add_argument("--junit", help="also write the result as a one-case JUnit file")
     a = ap.parse_args()
     problems = []
     for path in source_files(a.dirs):
@@ -126,13 +124,6 @@ def main():
                                 f"(at most {a.max_function}): {header}")
     for p in problems:
         print(p)
-    if a.junit:
-        fail = (f'<failure message="{len(problems)} size problems">{escape(chr(10).join(problems))}</failure>'
-                if problems else "")
-        os.makedirs(os.path.dirname(os.path.abspath(a.junit)), exist_ok=True)
-        with open(a.junit, "w") as f:
-            f.write('<testsuite name="check_sizes" tests="1"><testcase classname="workspace" '
-                    f'name="file_and_function_sizes">{fail}</testcase></testsuite>\n')
     return 1 if problems else 0
 
 

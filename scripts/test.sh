@@ -18,28 +18,34 @@ ctest --output-on-failure -j1 "$@"
 ctest_rc=$?
 set -e
 
-# The workspace stays catkin_lint clean (errors and warnings), counted as
-# one more test case.
-set +e
-lint_out=$(cd "$ROOT" && catkin_lint --strict src 2>&1)
-lint_rc=$?
-set -e
-mkdir -p "$ROOT/build/test_results/catkin_lint"
-LINT_OUT="$lint_out" LINT_RC="$lint_rc" /usr/bin/python3 - "$ROOT/build/test_results/catkin_lint/catkin_lint.xml" <<'PY'
+# Workspace-level checks, each counted as one more test case: runs the
+# command, writes its JUnit file, and shows its output when it fails.
+check_case() {  # check_case NAME COMMAND...
+  local name=$1 out rc
+  shift
+  set +e
+  out=$(cd "$ROOT" && "$@" 2>&1)
+  rc=$?
+  set -e
+  mkdir -p "$ROOT/build/test_results/$name"
+  CASE_OUT="$out" CASE_RC="$rc" /usr/bin/python3 - "$ROOT/build/test_results/$name/$name.xml" "$name" <<'PY'
 import os, sys
-from xml.sax.saxutils import escape
-failure = "" if os.environ["LINT_RC"] == "0" else \
-    f'<failure message="catkin_lint found problems">{escape(os.environ["LINT_OUT"])}</failure>'
+from xml.sax.saxutils import escape, quoteattr
+name = sys.argv[2]
+failure = "" if os.environ["CASE_RC"] == "0" else \
+    f'<failure message={quoteattr(name + " failed")}>{escape(os.environ["CASE_OUT"])}</failure>'
 with open(sys.argv[1], "w") as f:
-    f.write(f'<testsuite name="catkin_lint" tests="1"><testcase classname="workspace" name="catkin_lint_strict">'
+    f.write(f'<testsuite name={quoteattr(name)} tests="1"><testcase classname="workspace" name={quoteattr(name)}>'
             f'{failure}</testcase></testsuite>\n')
 PY
-[ "$lint_rc" -eq 0 ] || echo "$lint_out" >&2
+  [ "$rc" -eq 0 ] || echo "$out" >&2
+}
 
-# No source file over 500 lines and no function over 80 (issue 12), counted
-# as one more test case.
-/usr/bin/python3 "$ROOT/scripts/check_sizes.py" --junit "$ROOT/build/test_results/check_sizes/check_sizes.xml" \
-  $(cd "$ROOT" && ls -d mrt_*/) >&2 || true
+# catkin_lint clean (errors and warnings); no source file over 500 lines and
+# no function over 80; the Roby bringup runs from `catkin_make install`.
+check_case catkin_lint catkin_lint --strict src
+check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d mrt_*/)
+check_case check_install "$ROOT/scripts/check_install.sh"
 
 # A ctest failure the result files do not show (a test that crashed before
 # writing any) counts as one more failed case.
