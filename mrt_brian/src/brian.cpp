@@ -35,7 +35,8 @@ FloatComposerKind parse_float_composer(const std::string& s) {
   if (s == "average") return FloatComposerKind::kAverage;
   if (s == "max") return FloatComposerKind::kMax;
   if (s == "min") return FloatComposerKind::kMin;
-  throw std::invalid_argument("float composer must be 'average', 'max' or 'min', got '" + s + "'");
+  if (s == "best") return FloatComposerKind::kSelectBest;
+  throw std::invalid_argument("float composer must be 'average', 'max', 'min' or 'best', got '" + s + "'");
 }
 DefuzzMethod parse_defuzz_method(const std::string& s) {
   if (s == "singleton") return DefuzzMethod::kSingleton;
@@ -89,6 +90,7 @@ void Brian::build(const ParsedConfig& c) {
   const FloatComposerKind fk =
       options_.float_composer.value_or(legacy ? FloatComposerKind::kMax : FloatComposerKind::kAverage);
   composer_ = Composer(options_.weight_composer, fk, defuzzyfier_.labels_per_action());
+  composer_.set_skip_zero_weight(!legacy);
 
   for (const auto& d : c.predicates) predicate_names_.intern(d.name);
   for (const auto& d : c.predicate_actions) predicate_names_.intern(d.name);
@@ -138,8 +140,8 @@ void Brian::build(const ParsedConfig& c) {
     engine_.add(std::move(beh));
   }
   engine_.set_filter(std::make_unique<ThresholdFilter>(options_.threshold,
-                                                       options_.threshold_reliability.value_or(legacy)));
-  want_filter_ = ThresholdFilter(options_.threshold, true);
+                                                       options_.threshold_reliability.value_or(legacy), legacy));
+  want_filter_ = ThresholdFilter(options_.threshold, true, legacy);
   engine_.finalize(options_.profile);
 
   const std::size_t nd = static_cast<std::size_t>(fuzzyfier_.datum_count());
@@ -153,6 +155,7 @@ void Brian::build(const ParsedConfig& c) {
   cando_.assign(nb, FuzzyValue{});
   want_.assign(nb, FuzzyValue{});
   weights_.assign(nb, 0.0);
+  scores_.assign(nb, 0.0);
   active_.assign(nb, 0);
   proposals_.reserve(engine_.max_proposals() + 16);
   composed_ = composer_.make_output();
@@ -195,7 +198,7 @@ bool Brian::command(int action, double* value) const {
 }
 
 void Brian::evaluate_predicate_actions(bool weighted) {
-  composer_.compose(proposals_, weighted ? &weights_ : nullptr, scratch_composed_);
+  composer_.compose(proposals_, weighted ? &weights_ : nullptr, scratch_composed_, &scores_);
   defuzzyfier_.defuzzify(scratch_composed_, scratch_value_, scratch_has_);
   for (std::size_t a = 0; a < proposed_datum_.size(); ++a) {
     const int d = proposed_datum_[a];
@@ -231,15 +234,17 @@ void Brian::run_cycle(CycleTrace* trace) {
   // Legacy: the WANT filter uses the same threshold as the CANDO filter,
   // also after engine().set_threshold() at run time.
   if (legacy) want_filter_.set_threshold(engine_.threshold());
-  for (std::size_t b = 0; b < want_.size(); ++b)
+  for (std::size_t b = 0; b < want_.size(); ++b) {
     weights_[b] = legacy ? (want_filter_.active(want_[b]) ? want_[b].value : 0.0) : want_[b].value;
+    scores_[b] = cando_[b].value * want_[b].value;  // eq. 10.5's mu_C * mu_W (select-best)
+  }
   ctx_.fired = trace ? &fired_ : nullptr;
   engine_.run(cando_, ctx_, this, active_);
   if (legacy) {
     composer_.weight_in_place(proposals_, weights_);
-    composer_.compose(proposals_, nullptr, composed_);
+    composer_.compose(proposals_, nullptr, composed_, &scores_);
   } else {
-    composer_.compose(proposals_, &weights_, composed_);
+    composer_.compose(proposals_, &weights_, composed_, &scores_);
   }
   defuzzyfier_.defuzzify(composed_, command_value_, command_has_);
   if (trace) fill_trace(*trace);

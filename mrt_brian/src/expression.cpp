@@ -7,13 +7,21 @@ namespace mrt::brian {
 FuzzyValue ExpressionPool::evaluate(int root, const EvalState& s) const {
   const ExprNode& n = nodes_[static_cast<std::size_t>(root)];
   switch (n.op) {
-    case ExprNode::kAnd: {
-      const FuzzyValue x = evaluate(n.a, s), y = evaluate(n.b, s);
-      return {std::min(x.value, y.value), std::min(x.reliability, y.reliability)};
-    }
+    case ExprNode::kAnd:
     case ExprNode::kOr: {
-      const FuzzyValue x = evaluate(n.a, s), y = evaluate(n.b, s);
-      return {std::max(x.value, y.value), std::max(x.reliability, y.reliability)};
+      const int* c = children_.data() + n.a;
+      FuzzyValue acc = evaluate(c[0], s);
+      for (int i = 1; i < n.b; ++i) {
+        const FuzzyValue y = evaluate(c[i], s);
+        if (n.op == ExprNode::kAnd) {
+          acc.value = std::min(acc.value, y.value);
+          acc.reliability = std::min(acc.reliability, y.reliability);
+        } else {
+          acc.value = std::max(acc.value, y.value);
+          acc.reliability = std::max(acc.reliability, y.reliability);
+        }
+      }
+      return acc;
     }
     case ExprNode::kNot: {
       const FuzzyValue x = evaluate(n.a, s);

@@ -1,4 +1,4 @@
-// rostest of brian_node on config/brian/harvesting: crisp data in, the
+// rostest of brian_node on examples/harvesting: crisp data in, the
 // commands worked by hand in the rule base's README out; introspection; a
 // good and a bad ~reload (the bad one keeps the running rule base).
 #include <gtest/gtest.h>

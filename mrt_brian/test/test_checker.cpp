@@ -220,9 +220,9 @@ TEST_F(CheckerTest, ReportsEveryProblemNotOnlyTheFirst) {
   EXPECT_EQ(Checker().check_path(dir_.string()).size(), 2u);
 }
 
-TEST(CheckerShipped, EveryRuleBaseUnderConfigIsClean) {
+TEST(CheckerShipped, EveryExampleRuleBaseIsClean) {
   int bases = 0;
-  for (const auto& e : fs::directory_iterator(MRT_BRIAN_CONFIG_DIR)) {
+  for (const auto& e : fs::directory_iterator(MRT_BRIAN_EXAMPLES_DIR)) {
     if (!e.is_directory()) continue;
     ++bases;
     const auto d = Checker().check_path(e.path().string());
@@ -231,7 +231,7 @@ TEST(CheckerShipped, EveryRuleBaseUnderConfigIsClean) {
       EXPECT_TRUE(Checker().check_path((e.path() / "BrianConfigs.ini").string()).empty()) << e.path();
     }
   }
-  EXPECT_GE(bases, 1);  // config/brian/harvesting
+  EXPECT_GE(bases, 1);  // examples/harvesting
 }
 
 TEST(CheckerShipped, NotARegularFile) {

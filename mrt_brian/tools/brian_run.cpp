@@ -17,7 +17,7 @@ int usage(const char* msg) {
   if (msg) std::fprintf(stderr, "brian_run: %s\n", msg);
   std::fprintf(stderr,
                "usage: brian_run [--profile manual|legacy] [--trace] [--threshold T]\n"
-               "                 [--weight mult|max|min] [--float average|max|min]\n"
+               "                 [--weight mult|max|min] [--float average|max|min|best]\n"
                "                 [--defuzz singleton|barycenter] <dir | BrianConfigs.ini> <input-file>\n");
   return 2;
 }

@@ -40,7 +40,7 @@ struct BrianOptions {
   /// Threshold the reliability too (default: legacy yes, manual no).
   std::optional<bool> threshold_reliability;
   WeightComposerKind weight_composer = WeightComposerKind::kMult;
-  /// Default: manual average, legacy max.
+  /// Default: manual average, legacy max; kSelectBest: eq. 10.5.
   std::optional<FloatComposerKind> float_composer;
   DefuzzMethod defuzzification = DefuzzMethod::kSingleton;
   /// Other behaviour kinds, by file extension of the behaviour-list entry
@@ -123,6 +123,7 @@ class Brian : private HierarchyObserver {
   EvalState state_;
   std::vector<FuzzyValue> cando_, want_;
   std::vector<double> weights_;
+  std::vector<double> scores_;  // CANDO x WANT per behaviour (select-best)
   std::vector<std::uint8_t> active_;
   ProposalList proposals_;
   ComposedActions composed_, scratch_composed_;
