@@ -19,4 +19,5 @@ set(MRT_BRIAN_CORE_SOURCES
   src/rule_parser.cpp
   src/shape.cpp
   src/shape_parser.cpp
-  src/trace.cpp)
+  src/trace.cpp
+  src/validator.cpp)
