@@ -13,6 +13,7 @@ set(MRT_BRIAN_CORE_SOURCES
   src/expression_compiler.cpp
   src/fuzzy_set.cpp
   src/fuzzyfier.cpp
+  src/legacy.cpp
   src/lexer.cpp
   src/predicate_parser.cpp
   src/rule_behavior.cpp
