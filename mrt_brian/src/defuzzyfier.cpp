@@ -44,6 +44,10 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
     if (profile == Profile::kLegacy && a.name.find("Angle") != std::string::npos) w = Wrap::kLegacyAngle;
     else w = sh.circular() ? Wrap::kCircular : Wrap::kLinear;
   }
+  for (int a = 0; a < action_count(); ++a) {
+    point_first_.push_back(static_cast<int>(points_.size()));
+    for (int l = 0; l < label_count(a); ++l) points_.push_back(singleton_point(a, l));
+  }
 }
 
 std::vector<int> Defuzzyfier::labels_per_action() const {
@@ -88,11 +92,14 @@ bool Defuzzyfier::barycenter(int a, const ComposedActions& in, double* out) cons
 }
 
 bool Defuzzyfier::singleton_linear(int a, const ComposedActions& in, double* out) const {
+  const int labels = label_count(a);
+  const std::size_t slot = static_cast<std::size_t>(in.first[static_cast<std::size_t>(a)]);
+  const double* point = points_.data() + point_first_[static_cast<std::size_t>(a)];
   double num = 0.0, den = 0.0;
-  for (int l = 0; l < label_count(a); ++l) {
-    if (!in.present(a, l)) continue;
-    const double mu = in.get(a, l);
-    num += mu * singleton_point(a, l);
+  for (int l = 0; l < labels; ++l) {
+    if (in.count[slot + static_cast<std::size_t>(l)] <= 0) continue;
+    const double mu = in.value[slot + static_cast<std::size_t>(l)];
+    num += mu * point[l];
     den += mu;
   }
   if (den == 0.0) return false;
@@ -140,15 +147,19 @@ void Defuzzyfier::defuzzify(const ComposedActions& in, std::vector<double>& valu
   const std::size_t n = static_cast<std::size_t>(action_count());
   value.assign(n, 0.0);
   has.assign(n, 0);
+  const bool barycenter_method = method_ == DefuzzMethod::kBarycenter;
   for (int a = 0; a < action_count(); ++a) {
     double v = 0.0;
-    bool ok = false;
-    if (method_ == DefuzzMethod::kBarycenter) ok = barycenter(a, in, &v);
-    else if (wrap(a) == Wrap::kLegacyAngle) ok = singleton_legacy_angle(a, in, &v);
-    else if (wrap(a) == Wrap::kCircular) ok = singleton_circular(a, in, &v);
-    else ok = singleton_linear(a, in, &v);
-    value[static_cast<std::size_t>(a)] = v;
-    has[static_cast<std::size_t>(a)] = ok ? 1 : 0;
+    bool ok;
+    const Wrap w = wrap_[static_cast<std::size_t>(a)];
+    if (barycenter_method) ok = barycenter(a, in, &v);
+    else if (w == Wrap::kLinear) ok = singleton_linear(a, in, &v);
+    else if (w == Wrap::kCircular) ok = singleton_circular(a, in, &v);
+    else ok = singleton_legacy_angle(a, in, &v);
+    if (ok) {
+      value[static_cast<std::size_t>(a)] = v;
+      has[static_cast<std::size_t>(a)] = 1;
+    }
   }
 }
 

@@ -7,24 +7,28 @@ namespace mrt::brian {
 FuzzyValue ExpressionPool::evaluate(int root, const EvalState& s) const {
   const ExprNode& n = nodes_[static_cast<std::size_t>(root)];
   switch (n.op) {
-    case ExprNode::kAnd:
+    case ExprNode::kAnd: {
+      const int* c = children_.data() + n.a;
+      FuzzyValue acc = operand(c[0], s);
+      for (int i = 1; i < n.b; ++i) {
+        const FuzzyValue y = operand(c[i], s);
+        acc.value = std::min(acc.value, y.value);
+        acc.reliability = std::min(acc.reliability, y.reliability);
+      }
+      return acc;
+    }
     case ExprNode::kOr: {
       const int* c = children_.data() + n.a;
-      FuzzyValue acc = evaluate(c[0], s);
+      FuzzyValue acc = operand(c[0], s);
       for (int i = 1; i < n.b; ++i) {
-        const FuzzyValue y = evaluate(c[i], s);
-        if (n.op == ExprNode::kAnd) {
-          acc.value = std::min(acc.value, y.value);
-          acc.reliability = std::min(acc.reliability, y.reliability);
-        } else {
-          acc.value = std::max(acc.value, y.value);
-          acc.reliability = std::max(acc.reliability, y.reliability);
-        }
+        const FuzzyValue y = operand(c[i], s);
+        acc.value = std::max(acc.value, y.value);
+        acc.reliability = std::max(acc.reliability, y.reliability);
       }
       return acc;
     }
     case ExprNode::kNot: {
-      const FuzzyValue x = evaluate(n.a, s);
+      const FuzzyValue x = operand(n.a, s);
       return {1.0 - x.value, x.reliability};
     }
     case ExprNode::kDatum:

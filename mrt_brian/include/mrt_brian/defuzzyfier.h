@@ -76,6 +76,9 @@ class Defuzzyfier {
   SymbolTable actions_;
   std::vector<int> shape_of_;
   std::vector<Wrap> wrap_;
+  // Singleton points by action, flat (points_[point_first_[a] + label]).
+  std::vector<double> points_;
+  std::vector<int> point_first_;
   DefuzzMethod method_ = DefuzzMethod::kSingleton;
   Profile profile_ = Profile::kManual;
 };

@@ -62,6 +62,15 @@ class ExpressionPool {
   std::size_t size() const { return nodes_.size(); }
 
  private:
+  /// An AND/OR operand: fuzzy data and predicates (most operands) are read
+  /// here, anything else through evaluate().
+  FuzzyValue operand(int id, const EvalState& s) const {
+    const ExprNode& n = nodes_[static_cast<std::size_t>(id)];
+    if (n.op == ExprNode::kDatum) return s.fuzzy[static_cast<std::size_t>(n.ref)];
+    if (n.op == ExprNode::kPredicate) return s.predicates[static_cast<std::size_t>(n.ref)];
+    return evaluate(id, s);
+  }
+
   std::vector<ExprNode> nodes_;
   std::vector<int> children_;
 };
