@@ -27,6 +27,14 @@ FuzzyValue ExpressionPool::evaluate(int root, const EvalState& s) const {
       }
       return acc;
     }
+    case ExprNode::kAnd2: {
+      const FuzzyValue x = operand(n.a, s), y = operand(n.b, s);
+      return {std::min(x.value, y.value), std::min(x.reliability, y.reliability)};
+    }
+    case ExprNode::kOr2: {
+      const FuzzyValue x = operand(n.a, s), y = operand(n.b, s);
+      return {std::max(x.value, y.value), std::max(x.reliability, y.reliability)};
+    }
     case ExprNode::kNot: {
       const FuzzyValue x = operand(n.a, s);
       return {1.0 - x.value, x.reliability};

@@ -35,9 +35,9 @@ struct EvalState {
 /// not a chain of 100 000 nested nodes, so evaluation recurses only as deep
 /// as the parser's nesting limit.
 struct ExprNode {
-  enum Op : std::uint8_t { kAnd, kOr, kNot, kDatum, kPredicate, kProposal, kZero };
+  enum Op : std::uint8_t { kAnd, kOr, kAnd2, kOr2, kNot, kDatum, kPredicate, kProposal, kZero };
   Op op = kZero;
-  int a = -1, b = -1;  // kAnd, kOr: first child slot and count; kNot: the operand
+  int a = -1, b = -1;  // kAnd, kOr: first child slot and count; kAnd2, kOr2: the two operands; kNot: a
   int ref = -1;        // fuzzy slot, predicate id, or behaviour id (-1: any)
   int action = -1;     // kProposal
   int label = -1;      // kProposal (-1: ANY)
@@ -49,9 +49,16 @@ class ExpressionPool {
     nodes_.push_back(n);
     return static_cast<int>(nodes_.size()) - 1;
   }
-  /// An AND or OR node over `operands` (node ids).
+  /// An AND or OR node over `operands` (node ids); two operands (the
+  /// common case) are held in the node itself.
   int add_nary(ExprNode::Op op, const std::vector<int>& operands) {
     ExprNode n;
+    if (operands.size() == 2) {
+      n.op = op == ExprNode::kAnd ? ExprNode::kAnd2 : ExprNode::kOr2;
+      n.a = operands[0];
+      n.b = operands[1];
+      return add(n);
+    }
     n.op = op;
     n.a = static_cast<int>(children_.size());
     n.b = static_cast<int>(operands.size());
