@@ -13,10 +13,12 @@ set(MRT_BRIAN_CORE_SOURCES
   src/expression_compiler.cpp
   src/fuzzy_set.cpp
   src/fuzzyfier.cpp
+  src/legacy.cpp
   src/lexer.cpp
   src/predicate_parser.cpp
   src/rule_behavior.cpp
   src/rule_parser.cpp
   src/shape.cpp
   src/shape_parser.cpp
-  src/trace.cpp)
+  src/trace.cpp
+  src/validator.cpp)

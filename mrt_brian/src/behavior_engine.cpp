@@ -52,7 +52,11 @@ void BehaviorEngine::run(const std::vector<FuzzyValue>& cando, BehaviorContext& 
   for (std::size_t i = 0; i < behaviors_.size(); ++i) active[i] = filter_->active(cando[i]) ? 1 : 0;
   for (std::size_t li = 0; li < schedule_.size(); ++li) {
     const auto& [level, ids] = schedule_[li];
-    if (profile_ == Profile::kManual && li > 0 && observer) observer->before_level(level);
+    if (profile_ == Profile::kManual && li > 0 && observer) {
+      observer->before_level(level);
+      // The observer may have evaluated this level's CANDO again (§10.4.3).
+      for (int id : ids) active[static_cast<std::size_t>(id)] = filter_->active(cando[static_cast<std::size_t>(id)]) ? 1 : 0;
+    }
     for (int id : ids) {
       if (!active[static_cast<std::size_t>(id)]) continue;
       if (profile_ == Profile::kLegacy && li > 0 && observer) observer->before_behavior(id);

@@ -1,10 +1,12 @@
 #include "mrt_brian/brian.h"
 
+#include <cstdio>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
 
-#include "mrt_brian/expression_compiler.h"
 #include "mrt_brian/rule_behavior.h"
+#include "mrt_brian/validator.h"
 #include "mrt_common/parse_error.h"
 
 namespace mrt::brian {
@@ -35,7 +37,8 @@ FloatComposerKind parse_float_composer(const std::string& s) {
   if (s == "average") return FloatComposerKind::kAverage;
   if (s == "max") return FloatComposerKind::kMax;
   if (s == "min") return FloatComposerKind::kMin;
-  throw std::invalid_argument("float composer must be 'average', 'max' or 'min', got '" + s + "'");
+  if (s == "best") return FloatComposerKind::kSelectBest;
+  throw std::invalid_argument("float composer must be 'average', 'max', 'min' or 'best', got '" + s + "'");
 }
 DefuzzMethod parse_defuzz_method(const std::string& s) {
   if (s == "singleton") return DefuzzMethod::kSingleton;
@@ -80,7 +83,33 @@ std::unique_ptr<Brian> Brian::from_path(const std::string& path, const BrianOpti
   return std::make_unique<Brian>(ConfigFiles::locate(path), options);
 }
 
+namespace {
+// Does `e` read a predicate named in `names`?
+bool reads_any(const ExprAst& e, const std::set<std::string>& names) {
+  if (e.kind == ExprAst::kPredicate) return names.count(e.name) > 0;
+  for (const auto& a : e.args)
+    if (reads_any(a, names)) return true;
+  return false;
+}
+}  // namespace
+
+// The rules brian_check applies (validate()), for names: the manual profile
+// refuses a rule base naming anything unknown, with brian_check's
+// `file:line: message`; the legacy profile reads it as 0, as the 2009
+// engine did, and warns once per name.
+void Brian::check_names(const ParsedConfig& c) const {
+  std::set<std::string> warned;
+  for (const Diagnostic& d : validate(c)) {
+    if (d.kind != Diagnostic::kUnknownName) continue;
+    if (options_.profile == Profile::kManual) throw ParseError(d.file, d.line, 0, d.message);
+    if (!warned.insert(d.message).second) continue;
+    if (options_.warn) options_.warn(d.str());
+    else std::fprintf(stderr, "warning: %s\n", d.str().c_str());
+  }
+}
+
 void Brian::build(const ParsedConfig& c) {
+  check_names(c);
   const bool legacy = options_.profile == Profile::kLegacy;
   const ConfigFiles& files = c.files;
   fuzzyfier_ = Fuzzyfier(c.shapes, c.assocs, files.shape_ctof, files.ctof);
@@ -89,6 +118,7 @@ void Brian::build(const ParsedConfig& c) {
   const FloatComposerKind fk =
       options_.float_composer.value_or(legacy ? FloatComposerKind::kMax : FloatComposerKind::kAverage);
   composer_ = Composer(options_.weight_composer, fk, defuzzyfier_.labels_per_action());
+  composer_.set_skip_zero_weight(!legacy);
 
   for (const auto& d : c.predicates) predicate_names_.intern(d.name);
   for (const auto& d : c.predicate_actions) predicate_names_.intern(d.name);
@@ -98,7 +128,16 @@ void Brian::build(const ParsedConfig& c) {
     behavior_names_.intern(b.name);
   }
   ExpressionCompiler compiler(fuzzyfier_, predicate_names_, behavior_names_, defuzzyfier_);
+  build_conditions(c, compiler);
+  build_behaviors(c, compiler);
+  engine_.set_filter(std::make_unique<ThresholdFilter>(options_.threshold,
+                                                       options_.threshold_reliability.value_or(legacy), legacy));
+  want_filter_ = ThresholdFilter(options_.threshold, true, legacy);
+  engine_.finalize(options_.profile);
+  allocate_state(c);
+}
 
+void Brian::build_conditions(const ParsedConfig& c, const ExpressionCompiler& compiler) {
   DefinitionList preds, pacts, cando, want;
   for (const auto& d : c.predicates) preds.add(predicate_names_.find(d.name), compiler.compile(d.expr, pool_));
   for (const auto& d : c.predicate_actions) pacts.add(predicate_names_.find(d.name), compiler.compile(d.expr, pool_));
@@ -112,13 +151,22 @@ void Brian::build(const ParsedConfig& c) {
       out.add(id, compiler.compile(d.expr, pool_));
     }
   };
-  behaviour_defs(c.cando, files.cando, "CANDO", cando);
-  behaviour_defs(c.want, files.want, "WANT", want);
+  behaviour_defs(c.cando, c.files.cando, "CANDO", cando);
+  behaviour_defs(c.want, c.files.want, "WANT", want);
   preacher_ = Preacher(&pool_, preds);
   predicate_actions_ = Preacher(&pool_, pacts);
   candoer_ = Candoer(&pool_, cando);
   wanter_ = Wanter(&pool_, want);
+  std::set<std::string> pact_names;
+  for (const auto& d : c.predicate_actions) pact_names.insert(d.name);
+  conditions_read_pacts_ = false;
+  if (options_.profile == Profile::kManual)
+    for (const auto* defs : {&c.cando, &c.want})
+      for (const auto& d : *defs) conditions_read_pacts_ = conditions_read_pacts_ || reads_any(d.expr, pact_names);
+}
 
+void Brian::build_behaviors(const ParsedConfig& c, const ExpressionCompiler& compiler) {
+  const ConfigFiles& files = c.files;
   for (std::size_t i = 0; i < c.behaviors.size(); ++i) {
     const BehaviorDef& b = c.behaviors[i];
     std::unique_ptr<Behavior> beh;
@@ -132,16 +180,14 @@ void Brian::build(const ParsedConfig& c) {
       beh = std::make_unique<RuleBehavior>(b.name, b.level, c.rules[i], c.behavior_files[i], compiler,
                                            defuzzyfier_, pool_);
     }
-    if (legacy && b.level == 1 && beh->deletes())
+    if (options_.profile == Profile::kLegacy && b.level == 1 && beh->deletes())
       throw ParseError(files.behaviors, b.line, b.column,
                        "behaviour '" + b.name + "' uses &DEL at level 1, where there is nothing to delete");
     engine_.add(std::move(beh));
   }
-  engine_.set_filter(std::make_unique<ThresholdFilter>(options_.threshold,
-                                                       options_.threshold_reliability.value_or(legacy)));
-  want_filter_ = ThresholdFilter(options_.threshold, true);
-  engine_.finalize(options_.profile);
+}
 
+void Brian::allocate_state(const ParsedConfig& c) {
   const std::size_t nd = static_cast<std::size_t>(fuzzyfier_.datum_count());
   input_value_.assign(nd, 0.0);
   input_rel_.assign(nd, 1.0);
@@ -152,7 +198,10 @@ void Brian::build(const ParsedConfig& c) {
   const std::size_t nb = static_cast<std::size_t>(engine_.size());
   cando_.assign(nb, FuzzyValue{});
   want_.assign(nb, FuzzyValue{});
+  scratch_cando_.assign(nb, FuzzyValue{});
+  scratch_want_.assign(nb, FuzzyValue{});
   weights_.assign(nb, 0.0);
+  scores_.assign(nb, 0.0);
   active_.assign(nb, 0);
   proposals_.reserve(engine_.max_proposals() + 16);
   composed_ = composer_.make_output();
@@ -195,7 +244,7 @@ bool Brian::command(int action, double* value) const {
 }
 
 void Brian::evaluate_predicate_actions(bool weighted) {
-  composer_.compose(proposals_, weighted ? &weights_ : nullptr, scratch_composed_);
+  composer_.compose(proposals_, weighted ? &weights_ : nullptr, scratch_composed_, &scores_);
   defuzzyfier_.defuzzify(scratch_composed_, scratch_value_, scratch_has_);
   for (std::size_t a = 0; a < proposed_datum_.size(); ++a) {
     const int d = proposed_datum_[a];
@@ -209,7 +258,26 @@ void Brian::evaluate_predicate_actions(bool weighted) {
   else predicate_actions_.evaluate(state_);
 }
 
-void Brian::before_level(int /*level*/) { evaluate_predicate_actions(true); }
+void Brian::before_level(int level) {
+  evaluate_predicate_actions(true);
+  if (conditions_read_pacts_) reevaluate_conditions(level);
+}
+
+// Manual profile, §10.4.3: the CANDO and WANT of the behaviours of `level`
+// are evaluated again now that the predicate actions hold what the lower
+// levels propose (the engine reads the new CANDO when it reaches them).
+void Brian::reevaluate_conditions(int level) {
+  candoer_.evaluate(state_, scratch_cando_);
+  wanter_.evaluate(state_, scratch_want_);
+  for (int b = 0; b < engine_.size(); ++b) {
+    if (engine_.behavior(b).level() != level) continue;
+    const std::size_t i = static_cast<std::size_t>(b);
+    cando_[i] = scratch_cando_[i];
+    want_[i] = scratch_want_[i];
+    weights_[i] = want_[i].value;
+    scores_[i] = cando_[i].value * want_[i].value;
+  }
+}
 
 void Brian::before_behavior(int /*behavior*/) {
   composer_.weight_in_place(proposals_, weights_);
@@ -231,15 +299,17 @@ void Brian::run_cycle(CycleTrace* trace) {
   // Legacy: the WANT filter uses the same threshold as the CANDO filter,
   // also after engine().set_threshold() at run time.
   if (legacy) want_filter_.set_threshold(engine_.threshold());
-  for (std::size_t b = 0; b < want_.size(); ++b)
+  for (std::size_t b = 0; b < want_.size(); ++b) {
     weights_[b] = legacy ? (want_filter_.active(want_[b]) ? want_[b].value : 0.0) : want_[b].value;
+    scores_[b] = cando_[b].value * want_[b].value;  // eq. 10.5's mu_C * mu_W (select-best)
+  }
   ctx_.fired = trace ? &fired_ : nullptr;
   engine_.run(cando_, ctx_, this, active_);
   if (legacy) {
     composer_.weight_in_place(proposals_, weights_);
-    composer_.compose(proposals_, nullptr, composed_);
+    composer_.compose(proposals_, nullptr, composed_, &scores_);
   } else {
-    composer_.compose(proposals_, &weights_, composed_);
+    composer_.compose(proposals_, &weights_, composed_, &scores_);
   }
   defuzzyfier_.defuzzify(composed_, command_value_, command_has_);
   if (trace) fill_trace(*trace);

@@ -2,6 +2,7 @@
 // mrt_msgs/CrispDataArray -> CrispDataList, CommandList -> mrt_msgs/CommandArray.
 // See README.md for the topics, services and parameters.
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -14,53 +15,86 @@
 
 #include "mrt_brian/brian.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_common_ros/params.h"
 
 namespace mrt::brian {
 
 namespace {
+
+using mrt::ros_common::ParamError;
+using mrt::ros_common::ParamReader;
 
 struct NodeOptions {
   std::string config;
   BrianOptions brian;
   double rate = 0.0;
   bool introspection = true;
+  /// Fixed rate only: seconds without crisp data after which the safe
+  /// commands are published instead (0: never).
+  double input_timeout = 0.0;
+  /// Safe set-points by action name; actions not listed get 0.
+  std::map<std::string, double> safe_commands;
 };
 
-// Reads and validates the private parameters; throws std::invalid_argument
-// naming the parameter.
+// A string parameter parsed by `parse` (std::invalid_argument -> ParamError).
+template <class T, class Parse>
+void get_choice(ParamReader& r, const std::string& name, T& value, const std::string& def, const std::string& choices,
+                Parse parse) {
+  std::string s = def;
+  r.get(name, s);
+  try {
+    value = parse(s);
+  } catch (const std::invalid_argument&) {
+    throw ParamError(name, choices + ", got '" + s + "'");
+  }
+}
+
+// Reads and validates the private parameters once (the stack's ParamReader
+// style); throws ParamError naming the parameter.
 NodeOptions read_options(const ros::NodeHandle& pnh) {
   NodeOptions o;
-  if (!pnh.getParam("config", o.config) || o.config.empty())
-    throw std::invalid_argument("~config: required, a rule-base directory or a BrianConfigs.ini");
-  auto str = [&](const char* name, const std::string& def) {
-    std::string v;
-    pnh.param<std::string>(name, v, def);
-    return v;
-  };
-  auto wrap = [](const char* name, auto fn) {
-    try {
-      return fn();
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("~") + name + ": " + e.what());
-    }
-  };
-  o.brian.profile = wrap("profile", [&] { return parse_profile(str("profile", "manual")); });
-  pnh.param("threshold", o.brian.threshold, 0.49);
-  if (!(o.brian.threshold >= 0.0 && o.brian.threshold <= 1.0))
-    throw std::invalid_argument("~threshold: must be in [0, 1]");
+  ParamReader r(pnh);
+  r.require("config", o.config, "a rule-base directory or a BrianConfigs.ini");
+  ParamReader::check(!o.config.empty(), "config", "a rule-base directory or a BrianConfigs.ini");
+  get_choice(r, "profile", o.brian.profile, "manual", "'manual' or 'legacy'", parse_profile);
+  r.get("threshold", o.brian.threshold);
+  ParamReader::check(o.brian.threshold >= 0.0 && o.brian.threshold <= 1.0, "threshold", "a number in [0, 1]");
   if (pnh.hasParam("threshold_reliability")) {
     bool b = false;
-    pnh.getParam("threshold_reliability", b);
+    r.get("threshold_reliability", b);
     o.brian.threshold_reliability = b;
   }
-  o.brian.weight_composer = wrap("weight_composer", [&] { return parse_weight_composer(str("weight_composer", "mult")); });
-  const std::string fc = str("float_composer", "");
-  if (!fc.empty()) o.brian.float_composer = wrap("float_composer", [&] { return parse_float_composer(fc); });
-  o.brian.defuzzification = wrap("defuzzification", [&] { return parse_defuzz_method(str("defuzzification", "singleton")); });
-  pnh.param("rate", o.rate, 0.0);
-  if (!(o.rate >= 0.0 && std::isfinite(o.rate))) throw std::invalid_argument("~rate: must be >= 0 (0: a cycle per message)");
-  pnh.param("introspection", o.introspection, true);
+  get_choice(r, "weight_composer", o.brian.weight_composer, "mult", "'mult', 'max' or 'min'", parse_weight_composer);
+  if (pnh.hasParam("float_composer")) {
+    FloatComposerKind k{};
+    get_choice(r, "float_composer", k, "", "'average', 'max', 'min' or 'best'", parse_float_composer);
+    o.brian.float_composer = k;
+  }
+  get_choice(r, "defuzzification", o.brian.defuzzification, "singleton", "'singleton' or 'barycenter'",
+             parse_defuzz_method);
+  r.get_non_negative("rate", o.rate).get("introspection", o.introspection);
+  r.get_non_negative("input_timeout", o.input_timeout).get("safe_commands", o.safe_commands);
+  ParamReader::check(o.input_timeout == 0.0 || o.rate > 0.0, "input_timeout",
+                     "0 unless ~rate > 0 (the timeout is checked at every fixed-rate cycle)");
+  for (const auto& [name, value] : o.safe_commands)
+    ParamReader::check(std::isfinite(value), "safe_commands", "finite set-points (" + name + ")");
+  o.brian.warn = [](const std::string& w) { ROS_WARN("brian_node: %s", w.c_str()); };
   return o;
+}
+
+// The safe commands for `brian`'s actions: the configured value, else 0.
+// A name that is not an action of the rule base is a parameter error.
+CommandList safe_commands(const NodeOptions& o, const Brian& brian) {
+  for (const auto& [name, value] : o.safe_commands)
+    ParamReader::check(brian.defuzzyfier().action_id(name) >= 0, "safe_commands",
+                       "names of actions of the rule base (s_ftoc), got '" + name + "'");
+  CommandList out;
+  for (int a = 0; a < brian.defuzzyfier().action_count(); ++a) {
+    const std::string& name = brian.defuzzyfier().action_name(a);
+    const auto it = o.safe_commands.find(name);
+    out.push_back({name, it == o.safe_commands.end() ? 0.0 : it->second});
+  }
+  return out;
 }
 
 const char* profile_name(Profile p) { return p == Profile::kLegacy ? "legacy" : "manual"; }
@@ -72,6 +106,8 @@ class BrianNode {
   BrianNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), diag_(nh, pnh) {
     options_ = read_options(pnh_);
     brian_ = Brian::from_path(options_.config, options_.brian);  // throws: the node exits non-zero
+    safe_ = safe_commands(options_, *brian_);
+    last_input_ = ros::Time::now();
     commands_pub_ = nh_.advertise<mrt_msgs::CommandArray>("commands", 10);
     if (options_.introspection) introspection_pub_ = pnh_.advertise<mrt_msgs::BrianIntrospection>("introspection", 10);
     crisp_sub_ = nh_.subscribe("crisp_data", 10, &BrianNode::on_crisp, this);
@@ -106,17 +142,34 @@ class BrianNode {
     input_.clear();
     for (const auto& d : msg->data) input_.push_back({d.name, d.value, d.reliability});
     have_input_ = true;
+    last_input_ = ros::Time::now();
+    if (stale_) {
+      stale_ = false;
+      ROS_INFO("brian_node: crisp data again, cycling on it");
+    }
     if (options_.rate <= 0.0) cycle(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp);
   }
 
+  // Fixed rate: a cycle on the latest input, or the safe commands when no
+  // crisp data arrived within ~input_timeout.
   void on_timer(const ros::TimerEvent&) {
-    if (have_input_) cycle(ros::Time::now());
+    const ros::Time now = ros::Time::now();
+    if (options_.input_timeout > 0.0 && (now - last_input_).toSec() > options_.input_timeout) {
+      if (!stale_) {
+        stale_ = true;
+        ++stale_periods_;
+        ROS_WARN("brian_node: no crisp data for %.3f s (~input_timeout): publishing the safe commands",
+                 (now - last_input_).toSec());
+        diag_.force_update();
+      }
+      publish(safe_, now);
+      diag_.update();
+      return;
+    }
+    if (have_input_) cycle(now);
   }
 
-  void cycle(const ros::Time& stamp) {
-    const bool intro = options_.introspection && introspection_pub_.getNumSubscribers() > 0;
-    const CommandList& out = brian_->run(input_, intro ? &trace_ : nullptr);
-    ++cycles_;
+  void publish(const CommandList& out, const ros::Time& stamp) {
     mrt_msgs::CommandArray cmd;
     cmd.header.stamp = stamp;
     for (const auto& c : out) {
@@ -126,7 +179,15 @@ class BrianNode {
       cmd.commands.push_back(m);
     }
     commands_pub_.publish(cmd);
-    if (intro) publish_introspection(stamp, cmd);
+    last_cmd_ = std::move(cmd);
+  }
+
+  void cycle(const ros::Time& stamp) {
+    const bool intro = options_.introspection && introspection_pub_.getNumSubscribers() > 0;
+    const CommandList& out = brian_->run(input_, intro ? &trace_ : nullptr);
+    ++cycles_;
+    publish(out, stamp);
+    if (intro) publish_introspection(stamp, last_cmd_);
     diag_.update();
   }
 
@@ -169,11 +230,13 @@ class BrianNode {
     try {
       NodeOptions o = read_options(pnh_);
       auto b = Brian::from_path(o.config, o.brian);
+      CommandList safe = safe_commands(o, *b);
       if (o.rate != options_.rate)
         ROS_WARN("brian_node: ~rate changes need a restart; keeping %g", options_.rate);
       o.rate = options_.rate;
       o.introspection = options_.introspection;
       brian_ = std::move(b);
+      safe_ = std::move(safe);
       options_ = o;
       res.success = true;
       res.message = "reloaded " + options_.config + " (" + std::to_string(brian_->engine().size()) + " behaviours)";
@@ -191,7 +254,10 @@ class BrianNode {
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
-    if (!last_reload_error_.empty())
+    if (stale_)
+      s.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                "no crisp data within ~input_timeout: publishing the safe commands");
+    else if (!last_reload_error_.empty())
       s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "last reload failed: " + last_reload_error_);
     else if (dropped_ > 0)
       s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "malformed crisp data messages dropped");
@@ -203,6 +269,9 @@ class BrianNode {
     s.add("cycles", cycles_);
     s.add("dropped messages", dropped_);
     s.add("reloads", reloads_);
+    s.add("input timeout (s)", options_.input_timeout);
+    s.add("publishing safe commands", stale_ ? "yes" : "no");
+    s.add("stale-input periods", stale_periods_);
   }
 
   ros::NodeHandle nh_, pnh_;
@@ -215,8 +284,11 @@ class BrianNode {
   ros::Timer timer_;
   CrispDataList input_;
   CycleTrace trace_;
-  bool have_input_ = false;
-  std::uint64_t cycles_ = 0, dropped_ = 0, reloads_ = 0;
+  CommandList safe_;
+  mrt_msgs::CommandArray last_cmd_;
+  ros::Time last_input_;
+  bool have_input_ = false, stale_ = false;
+  std::uint64_t cycles_ = 0, dropped_ = 0, reloads_ = 0, stale_periods_ = 0;
   std::string last_reload_error_;
 };
 
@@ -224,12 +296,9 @@ class BrianNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "brian");
-  try {
+  return mrt::ros_common::run_node([] {
     mrt::brian::BrianNode node{ros::NodeHandle(), ros::NodeHandle("~")};
     ros::spin();
-  } catch (const std::exception& e) {
-    ROS_FATAL("brian_node: %s", e.what());
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

@@ -1,6 +1,7 @@
 #include "mrt_brian/defuzzyfier.h"
 
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
 #include "mrt_common/angle.h"
@@ -8,6 +9,7 @@
 
 namespace mrt::brian {
 
+using mrt::common::kPi;
 using mrt::common::ParseError;
 
 Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<AssociationDef>& assocs,
@@ -35,8 +37,16 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
       shape_of_[static_cast<std::size_t>(id)] = shape;
     } else {
       shape_of_.push_back(shape);
-      is_angle_.push_back(a.name.find("Angle") != std::string::npos ? 1 : 0);
+      wrap_.push_back(Wrap::kLinear);
     }
+    const Shape& sh = shapes_[static_cast<std::size_t>(shape)];
+    Wrap& w = wrap_[static_cast<std::size_t>(id)];
+    if (profile == Profile::kLegacy && a.name.find("Angle") != std::string::npos) w = Wrap::kLegacyAngle;
+    else w = sh.circular() ? Wrap::kCircular : Wrap::kLinear;
+  }
+  for (int a = 0; a < action_count(); ++a) {
+    point_first_.push_back(static_cast<int>(points_.size()));
+    for (int l = 0; l < label_count(a); ++l) points_.push_back(singleton_point(a, l));
   }
 }
 
@@ -48,80 +58,106 @@ std::vector<int> Defuzzyfier::labels_per_action() const {
 
 double Defuzzyfier::singleton_point(int action, int label) const { return shape(action).set(label).singleton(); }
 
+bool Defuzzyfier::from_circle(int a, double c, double s, double w, double* out) const {
+  if (!(w > 0.0) || std::hypot(s, c) <= 1e-12 * w) return false;
+  double phi = std::atan2(s, c);  // (-pi, pi]
+  if (phi < 0.0) phi += 2.0 * kPi;
+  const double p = period(a);
+  double x = range_lo(a) + phi * p / (2.0 * kPi);
+  if (x >= range_lo(a) + p) x -= p;
+  *out = x;
+  return true;
+}
+
+bool Defuzzyfier::barycenter(int a, const ComposedActions& in, double* out) const {
+  const bool circular = wrap(a) != Wrap::kLinear;
+  const double k = circular ? 2.0 * kPi / period(a) : 0.0;
+  const auto& outlines = polygons_[static_cast<std::size_t>(shape_of_[static_cast<std::size_t>(a)])];
+  double num = 0.0, den = 0.0;
+  std::complex<double> moment(0.0, 0.0);
+  for (int l = 0; l < label_count(a); ++l) {
+    if (!in.present(a, l)) continue;
+    const double mu = in.get(a, l);
+    for (const Polygon& poly : outlines[static_cast<std::size_t>(l)]) {
+      const AreaMoment am = clipped_area(poly, mu);
+      den += am.area;
+      if (circular) moment += clipped_circular_moment(poly, mu, range_lo(a), k);
+      else num += am.moment;
+    }
+  }
+  if (circular) return from_circle(a, moment.real(), moment.imag(), den, out);
+  if (!(den > 0.0)) return false;
+  *out = num / den;
+  return true;
+}
+
+bool Defuzzyfier::singleton_linear(int a, const ComposedActions& in, double* out) const {
+  const int labels = label_count(a);
+  const std::size_t slot = static_cast<std::size_t>(in.first[static_cast<std::size_t>(a)]);
+  const double* point = points_.data() + point_first_[static_cast<std::size_t>(a)];
+  double num = 0.0, den = 0.0;
+  for (int l = 0; l < labels; ++l) {
+    if (in.count[slot + static_cast<std::size_t>(l)] <= 0) continue;
+    const double mu = in.value[slot + static_cast<std::size_t>(l)];
+    num += mu * point[l];
+    den += mu;
+  }
+  if (den == 0.0) return false;
+  *out = num / den;
+  return true;
+}
+
+// Weighted circular mean over the declared range, computed here so that the
+// cycle neither allocates nor throws.
+bool Defuzzyfier::singleton_circular(int a, const ComposedActions& in, double* out) const {
+  const double k = 2.0 * kPi / period(a);
+  double s = 0.0, c = 0.0, w = 0.0;
+  for (int l = 0; l < label_count(a); ++l) {
+    if (!in.present(a, l)) continue;
+    const double mu = in.get(a, l);
+    if (!(mu > 0.0)) continue;
+    const double theta = k * (singleton_point(a, l) - range_lo(a));
+    s += mu * std::sin(theta);
+    c += mu * std::cos(theta);
+    w += mu;
+  }
+  return from_circle(a, c, s, w, out);
+}
+
+// The 2009 engine: weighted sum of unit vectors with 0.01745 rad/deg.
+bool Defuzzyfier::singleton_legacy_angle(int a, const ComposedActions& in, double* out) const {
+  constexpr double k = 0.01745;
+  double sx = 0.0, sy = 0.0, w = 0.0;
+  for (int l = 0; l < label_count(a); ++l) {
+    if (!in.present(a, l)) continue;
+    const double mu = in.get(a, l);
+    sx += mu * std::cos(singleton_point(a, l) * k);
+    sy += mu * std::sin(singleton_point(a, l) * k);
+    w += mu;
+  }
+  if (w == 0.0) return false;
+  double deg = std::atan2(sy, sx) / k;
+  if (deg < 0.0) deg += 360.0;
+  *out = deg;
+  return true;
+}
+
 void Defuzzyfier::defuzzify(const ComposedActions& in, std::vector<double>& value,
                             std::vector<std::uint8_t>& has) const {
   const std::size_t n = static_cast<std::size_t>(action_count());
   value.assign(n, 0.0);
   has.assign(n, 0);
+  const bool barycenter_method = method_ == DefuzzMethod::kBarycenter;
   for (int a = 0; a < action_count(); ++a) {
-    const int labels = label_count(a);
-    double num = 0.0, den = 0.0;
-    if (method_ == DefuzzMethod::kBarycenter) {
-      for (int l = 0; l < labels; ++l) {
-        if (!in.present(a, l)) continue;
-        const double mu = in.get(a, l);
-        const auto& outlines = polygons_[static_cast<std::size_t>(shape_of_[static_cast<std::size_t>(a)])];
-        for (const Polygon& poly : outlines[static_cast<std::size_t>(l)]) {
-          const AreaMoment am = clipped_area(poly, mu);
-          num += am.moment;
-          den += am.area;
-        }
-      }
-      if (den > 0.0) {
-        value[static_cast<std::size_t>(a)] = num / den;
-        has[static_cast<std::size_t>(a)] = 1;
-      }
-      continue;
-    }
-    if (is_angle(a)) {
-      if (profile_ == Profile::kLegacy) {
-        // The 2009 engine: weighted sum of unit vectors with 0.01745 rad/deg.
-        constexpr double k = 0.01745;
-        double sx = 0.0, sy = 0.0, w = 0.0;
-        for (int l = 0; l < labels; ++l) {
-          if (!in.present(a, l)) continue;
-          const double mu = in.get(a, l);
-          sx += mu * std::cos(singleton_point(a, l) * k);
-          sy += mu * std::sin(singleton_point(a, l) * k);
-          w += mu;
-        }
-        if (w != 0.0) {
-          double deg = std::atan2(sy, sx) / k;
-          if (deg < 0.0) deg += 360.0;
-          value[static_cast<std::size_t>(a)] = deg;
-          has[static_cast<std::size_t>(a)] = 1;
-        }
-      } else {
-        // Weighted circular mean (as mrt::common::circular_mean), computed
-        // here so that the cycle neither allocates nor throws: when the
-        // weighted unit vectors cancel out there is no command.
-        double s = 0.0, c = 0.0, w = 0.0;
-        for (int l = 0; l < labels; ++l) {
-          if (!in.present(a, l)) continue;
-          const double mu = in.get(a, l);
-          if (!(mu > 0.0)) continue;
-          const double rad = mrt::common::deg_to_rad(singleton_point(a, l));
-          s += mu * std::sin(rad);
-          c += mu * std::cos(rad);
-          w += mu;
-        }
-        if (!(w > 0.0) || std::hypot(s, c) <= 1e-12 * w) continue;
-        double deg = mrt::common::rad_to_deg(mrt::common::normalize_angle(std::atan2(s, c)));
-        if (deg < 0.0) deg += 360.0;
-        if (deg >= 360.0) deg -= 360.0;
-        value[static_cast<std::size_t>(a)] = deg;
-        has[static_cast<std::size_t>(a)] = 1;
-      }
-      continue;
-    }
-    for (int l = 0; l < labels; ++l) {
-      if (!in.present(a, l)) continue;
-      const double mu = in.get(a, l);
-      num += mu * singleton_point(a, l);
-      den += mu;
-    }
-    if (den != 0.0) {
-      value[static_cast<std::size_t>(a)] = num / den;
+    double v = 0.0;
+    bool ok;
+    const Wrap w = wrap_[static_cast<std::size_t>(a)];
+    if (barycenter_method) ok = barycenter(a, in, &v);
+    else if (w == Wrap::kLinear) ok = singleton_linear(a, in, &v);
+    else if (w == Wrap::kCircular) ok = singleton_circular(a, in, &v);
+    else ok = singleton_legacy_angle(a, in, &v);
+    if (ok) {
+      value[static_cast<std::size_t>(a)] = v;
       has[static_cast<std::size_t>(a)] = 1;
     }
   }

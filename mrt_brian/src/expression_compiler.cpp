@@ -1,5 +1,7 @@
 #include "mrt_brian/expression_compiler.h"
 
+#include <vector>
+
 namespace mrt::brian {
 
 int ExpressionCompiler::compile(const ExprAst& e, ExpressionPool& pool) const {
@@ -7,15 +9,10 @@ int ExpressionCompiler::compile(const ExprAst& e, ExpressionPool& pool) const {
   switch (e.kind) {
     case ExprAst::kAnd:
     case ExprAst::kOr: {
-      int acc = compile(e.args[0], pool);
-      for (std::size_t i = 1; i < e.args.size(); ++i) {
-        ExprNode m;
-        m.op = e.kind == ExprAst::kAnd ? ExprNode::kAnd : ExprNode::kOr;
-        m.a = acc;
-        m.b = compile(e.args[i], pool);
-        acc = pool.add(m);
-      }
-      return acc;
+      std::vector<int> operands;
+      operands.reserve(e.args.size());
+      for (const auto& arg : e.args) operands.push_back(compile(arg, pool));
+      return pool.add_nary(e.kind == ExprAst::kAnd ? ExprNode::kAnd : ExprNode::kOr, operands);
     }
     case ExprAst::kNot:
       n.op = ExprNode::kNot;

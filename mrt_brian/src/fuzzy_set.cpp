@@ -105,32 +105,56 @@ AreaMoment linear_piece(double x0, double y0, double x1, double y1) {
   const double w = x1 - x0;
   return {0.5 * (y0 + y1) * w, w * (x0 * (2 * y0 + y1) + x1 * (y0 + 2 * y1)) / 6.0};
 }
+
+// Calls piece(x0, y0, x1, y1) for each linear piece of min(outline, h) with
+// a positive width.
+template <typename F>
+void for_each_clipped_piece(const Polygon& outline, double h, F piece) {
+  if (!(h > 0.0)) return;
+  for (std::size_t i = 0; i + 1 < outline.size(); ++i) {
+    const double x0 = outline[i].first, y0 = outline[i].second;
+    const double x1 = outline[i + 1].first, y1 = outline[i + 1].second;
+    if (x1 <= x0) continue;  // vertical edge: no area
+    const bool lo0 = y0 <= h, lo1 = y1 <= h;
+    if (lo0 && lo1) {
+      piece(x0, y0, x1, y1);
+    } else if (!lo0 && !lo1) {
+      piece(x0, h, x1, h);
+    } else {
+      const double xc = x0 + (h - y0) * (x1 - x0) / (y1 - y0);
+      if (lo0) {
+        piece(x0, y0, xc, h);
+        piece(xc, h, x1, h);
+      } else {
+        piece(x0, h, xc, h);
+        piece(xc, h, x1, y1);
+      }
+    }
+  }
+}
 }  // namespace
 
 AreaMoment clipped_area(const Polygon& outline, double h) {
   AreaMoment out;
-  if (!(h > 0.0)) return out;
-  auto add = [&out](const AreaMoment& p) { out.area += p.area; out.moment += p.moment; };
-  for (std::size_t i = 0; i + 1 < outline.size(); ++i) {
-    double x0 = outline[i].first, y0 = outline[i].second;
-    double x1 = outline[i + 1].first, y1 = outline[i + 1].second;
-    if (x1 <= x0) continue;  // vertical edge: no area
-    const bool lo0 = y0 <= h, lo1 = y1 <= h;
-    if (lo0 && lo1) {
-      add(linear_piece(x0, y0, x1, y1));
-    } else if (!lo0 && !lo1) {
-      add(linear_piece(x0, h, x1, h));
-    } else {
-      const double xc = x0 + (h - y0) * (x1 - x0) / (y1 - y0);
-      if (lo0) {
-        add(linear_piece(x0, y0, xc, h));
-        add(linear_piece(xc, h, x1, h));
-      } else {
-        add(linear_piece(x0, h, xc, h));
-        add(linear_piece(xc, h, x1, y1));
-      }
-    }
-  }
+  for_each_clipped_piece(outline, h, [&out](double x0, double y0, double x1, double y1) {
+    const AreaMoment p = linear_piece(x0, y0, x1, y1);
+    out.area += p.area;
+    out.moment += p.moment;
+  });
+  return out;
+}
+
+std::complex<double> clipped_circular_moment(const Polygon& outline, double h, double lo, double k) {
+  // With y(x) = y0 + m (x - x0), an antiderivative of y e^{i k (x - lo)} is
+  // e^{i k (x - lo)} (y(x) / (i k) + m / k^2).
+  using C = std::complex<double>;
+  C out(0.0, 0.0);
+  const C ik(0.0, k);
+  for_each_clipped_piece(outline, h, [&](double x0, double y0, double x1, double y1) {
+    const double m = (y1 - y0) / (x1 - x0);
+    auto f = [&](double x, double y) { return std::polar(1.0, k * (x - lo)) * (y / ik + m / (k * k)); };
+    out += f(x1, y1) - f(x0, y0);
+  });
   return out;
 }
 

@@ -26,6 +26,35 @@ std::string describe(const Token& t) {
   return "?";
 }
 
+std::vector<BlockComment> find_block_comments(const std::string& s) {
+  std::vector<BlockComment> out;
+  int line = 1;
+  std::size_t i = 0;
+  const std::size_t n = s.size();
+  while (i < n) {
+    if (s[i] == '\n') ++line;
+    if (s[i] != '#') { ++i; continue; }
+    if (i + 1 < n && s[i + 1] == '(') {
+      BlockComment b;
+      b.line = line;
+      while (i < n && s[i] != ';') {
+        if (s[i] == '\n') ++line;
+        if (s[i] == '=') {
+          b.swallows = true;
+          if (i + 1 < n && s[i + 1] == '>') b.rule = true;
+        }
+        ++i;
+      }
+      b.end_line = line;
+      out.push_back(b);
+      if (i < n) ++i;
+    } else {
+      while (i < n && s[i] != '\n') ++i;
+    }
+  }
+  return out;
+}
+
 std::vector<Token> tokenize(const std::string& s, bool comments, bool block_comments) {
   std::vector<Token> out;
   int line = 1;

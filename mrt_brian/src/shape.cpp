@@ -11,6 +11,7 @@ using mrt::common::ParseError;
 Shape Shape::from_def(const ShapeDef& def) {
   Shape s(def.name);
   for (const auto& set : def.sets) s.add(make_fuzzy_set(set.type, set.label, set.params));
+  if (def.circular) s.set_circular(def.range_lo, def.range_hi);
   return s;
 }
 

@@ -5,6 +5,19 @@
 
 namespace mrt::brian {
 
+namespace {
+// `(CIRCULAR lo hi)`: the shape covers the circular range [lo, hi).
+void parse_circular(TokenStream& ts, const Token& head, ShapeDef& shape) {
+  if (shape.circular) ts.fail(head, "shape " + shape.name + " declared CIRCULAR twice");
+  shape.range_lo = ts.expect_number("the start of the circular range");
+  shape.range_hi = ts.expect_number("the end of the circular range");
+  if (!(shape.range_hi > shape.range_lo))
+    ts.fail(head, "CIRCULAR range of shape " + shape.name + " must have its end above its start");
+  shape.circular = true;
+  ts.expect(Token::kClose, "')' closing CIRCULAR lo hi");
+}
+}  // namespace
+
 std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& file) {
   TokenStream ts(tokenize(text, true, false), file);  // no #( ... ; block comments here
   std::vector<ShapeDef> out;
@@ -15,7 +28,11 @@ std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& f
     while (ts.peek().kind == Token::kOpen) {
       ts.next();
       SetDef set;
-      const Token& type = ts.expect_word("a fuzzy set type (TRI TOL TOR DIV TRA REC SNG)");
+      const Token& type = ts.expect_word("a fuzzy set type (TRI TOL TOR DIV TRA REC SNG) or CIRCULAR");
+      if (type.text == "CIRCULAR") {
+        parse_circular(ts, type, shape);
+        continue;
+      }
       set.type = type.text;
       set.line = type.line;
       set.column = type.column;

@@ -1,4 +1,4 @@
-// rostest of brian_node on config/brian/harvesting: crisp data in, the
+// rostest of brian_node on examples/harvesting: crisp data in, the
 // commands worked by hand in the rule base's README out; introspection; a
 // good and a bad ~reload (the bad one keeps the running rule base).
 #include <gtest/gtest.h>
@@ -8,7 +8,12 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
+#include <cmath>
 #include <map>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+
+#include "mrt_common_ros/rostest_helpers.h"
 
 namespace {
 
@@ -174,6 +179,57 @@ TEST(Harvesting, FixedRate) {
   EXPECT_LE(cycles, 25u);
   ASSERT_EQ(h.last().count("SpeedModule"), 1u);
   EXPECT_NEAR(h.last().at("SpeedModule"), 75.0, 1e-6);
+}
+
+// Run by input_timeout.test (~rate 20 Hz, ~input_timeout 0.3 s,
+// ~safe_commands {SpeedAngle: 45}): on data, the hand-computed commands of
+// kAutoFarTarget (SpeedModule 75, SpeedAngle 0); 0.3 s after the data stop,
+// the safe commands (SpeedModule 0, SpeedAngle 45, Grasp 0) and a WARN in
+// /diagnostics; on new data, 75 and 0 again and the WARN clears.
+TEST(Harvesting, InputTimeout) {
+  using mrt::ros_common::spin_for;
+  using mrt::ros_common::wait_for;
+  Harness h;
+  ros::NodeHandle nh;
+  diagnostic_msgs::DiagnosticStatus status;
+  bool have_status = false;
+  auto diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& s : m->status)
+          if (s.name.find("Mr. BRIAN") != std::string::npos) {
+            status = s;
+            have_status = true;
+          }
+      });
+  auto fresh = [&] {
+    return h.last().count("SpeedModule") && std::abs(h.last().at("SpeedModule") - 75.0) < 1e-6;
+  };
+  // Keep the data coming for a while (every 0.1 s < 0.3 s).
+  for (int i = 0; i < 10; ++i) {
+    h.send(kAutoFarTarget);
+    spin_for(0.1);
+  }
+  ASSERT_TRUE(wait_for(fresh, 2.0));
+  EXPECT_NEAR(h.last().at("SpeedAngle"), 0.0, 1e-6);
+  // Stop: after 0.3 s the safe commands.
+  auto safe = [&] {
+    return h.last().count("SpeedModule") && h.last().at("SpeedModule") == 0.0 && h.last().count("SpeedAngle") &&
+           h.last().at("SpeedAngle") == 45.0;
+  };
+  ASSERT_TRUE(wait_for(safe, 3.0));
+  EXPECT_EQ(h.last().count("Grasp"), 1u);
+  EXPECT_EQ(h.last().at("Grasp"), 0.0);
+  ASSERT_TRUE(wait_for([&] { return have_status && status.level == diagnostic_msgs::DiagnosticStatus::WARN; }, 5.0));
+  EXPECT_NE(status.message.find("safe commands"), std::string::npos) << status.message;
+  // Data again (every 0.1 s): the rule base's answer, and the warning clears.
+  bool ok = false;
+  for (int i = 0; i < 50 && !(ok && fresh()); ++i) {
+    h.send(kAutoFarTarget);
+    spin_for(0.1);
+    ok = status.level == diagnostic_msgs::DiagnosticStatus::OK;
+  }
+  EXPECT_TRUE(fresh());
+  EXPECT_TRUE(ok) << status.message;
 }
 
 int main(int argc, char** argv) {

@@ -130,7 +130,7 @@ fs::path generate_base() {
         "(PS (TOL (LOW 5 15)) (TRI (MID 5 15 25)) (TOR (HIGH 15 25)))\n");
   write(d / "s_shape.txt",
         "(SPD (TRI (STOP -10 0 10)) (TRI (SLOW 0 10 20)) (TRI (FAST 10 20 30)) (TRI (VERY_FAST 20 30 40)))\n"
-        "(ANG (TRI (N -30 0 30)) (TRI (E 60 90 120)) (TRI (S 150 180 210)) (TRI (W 240 270 300)))\n");
+        "(ANG (CIRCULAR 0 360) (TRI (N -30 0 30)) (TRI (E 60 90 120)) (TRI (S 150 180 210)) (TRI (W 240 270 300)))\n");
   write(d / "s_ftoc.txt", "(Speed SPD)\n(SpeedAngle ANG)\n");
   std::string ctof, pred, cando, want, blist;
   for (int i = 0; i < 20; ++i) {

@@ -8,7 +8,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/wait.h>
+
+#include <string>
+#include <vector>
+
+#include "mrt_brian/brian.h"
 #include "mrt_brian/checker.h"
+#include "mrt_common/parse_error.h"
 
 using namespace mrt::brian;
 namespace fs = std::filesystem;
@@ -169,9 +176,36 @@ TEST_F(CheckerTest, ForwardReference) {
   expect_one("Predicate.ini", 2, "forward reference to predicate 'ObstacleFar'");
 }
 
-TEST_F(CheckerTest, PredicateActionInCando) {
+// §10.4.3 allows predicate actions in CANDO and WANT conditions: clean.
+TEST_F(CheckerTest, PredicateActionInCandoIsAllowed) {
   write(dir_ / "Cando.ini", "Cruise = (P ObstacleFar);\nBrake = (AND (P ObstacleNear)\n  (P GoingFast));\n");
-  expect_one("Cando.ini", 3, "predicate action 'GoingFast' in a CANDO/WANT condition");
+  write(dir_ / "want.txt", "Cruise = (NOT (P ObstacleNear));\nBrake = (P GoingFast);\n");
+  const auto d = Checker().check_path(dir_.string());
+  EXPECT_TRUE(d.empty()) << d[0].str();
+}
+
+// A `#(` block comment runs to the next ';': here from line 2 over the
+// definition of ObstacleFar (line 3) -> a warning at line 2 (and, since
+// ObstacleFar is then undefined, Cando.ini:1 and cruise.rul:2 name an
+// unknown predicate).
+TEST_F(CheckerTest, BlockCommentSwallowingADefinitionIsAWarning) {
+  write(dir_ / "Predicate.ini",
+        "ObstacleNear = (D Obstacle NEAR);\n#( far side\nObstacleFar = (D Obstacle FAR);\n");
+  const auto d = Checker().check_path(dir_.string());
+  ASSERT_EQ(d.size(), 3u) << d[0].str();
+  EXPECT_EQ(d[0].str(), (dir_ / "Predicate.ini").string() +
+                            ":2: warning: block comment '#(' runs to the ';' at line 3 and swallows a definition "
+                            "(a '#' comment ends at the end of the line)");
+  EXPECT_EQ(d[0].kind, Diagnostic::kWarning);
+  EXPECT_EQ(d[1].line, 1);
+  EXPECT_NE(d[1].message.find("unknown predicate 'ObstacleFar'"), std::string::npos);
+  EXPECT_EQ(d[2].line, 2);
+  EXPECT_EQ(fs::path(d[2].file).filename(), "cruise.rul");
+  // The same in a rules file swallows a rule; a one-line '#(' note without
+  // '=' is fine.
+  write(dir_ / "Predicate.ini", "ObstacleNear = (D Obstacle NEAR);\nObstacleFar = (D Obstacle FAR);\n");
+  write(dir_ / "behaviors/cruise.rul", "#( note ;\n#( old\n(ObstacleFar) => (Speed FAST);\n(ObstacleNear) => (Speed SLOW);\n");
+  expect_one("behaviors/cruise.rul", 2, "swallows a rule");
 }
 
 TEST_F(CheckerTest, UnknownAction) {
@@ -220,9 +254,9 @@ TEST_F(CheckerTest, ReportsEveryProblemNotOnlyTheFirst) {
   EXPECT_EQ(Checker().check_path(dir_.string()).size(), 2u);
 }
 
-TEST(CheckerShipped, EveryRuleBaseUnderConfigIsClean) {
+TEST(CheckerShipped, EveryExampleRuleBaseIsClean) {
   int bases = 0;
-  for (const auto& e : fs::directory_iterator(MRT_BRIAN_CONFIG_DIR)) {
+  for (const auto& e : fs::directory_iterator(MRT_BRIAN_EXAMPLES_DIR)) {
     if (!e.is_directory()) continue;
     ++bases;
     const auto d = Checker().check_path(e.path().string());
@@ -231,7 +265,7 @@ TEST(CheckerShipped, EveryRuleBaseUnderConfigIsClean) {
       EXPECT_TRUE(Checker().check_path((e.path() / "BrianConfigs.ini").string()).empty()) << e.path();
     }
   }
-  EXPECT_GE(bases, 1);  // config/brian/harvesting
+  EXPECT_GE(bases, 1);  // examples/harvesting
 }
 
 TEST(CheckerShipped, NotARegularFile) {
@@ -247,4 +281,48 @@ TEST(CheckerShipped, ReferenceRuleBases) {
   const auto d = Checker().check_path(std::string(MRT_BRIAN_TEST_DATA) + "/synth");
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].line, 7);
+}
+
+// The loaders apply the checker's rules (one validate()): in the manual
+// profile a rule base naming an unknown predicate fails to load with
+// brian_check's very line; brian_run exits 2 with it on stderr. The legacy
+// profile loads it (the name reads 0) and warns once per unknown name, even
+// when the name is used twice.
+TEST_F(CheckerTest, ManualProfileRefusesUnknownNamesAsTheCheckerReportsThem) {
+  write(dir_ / "want.txt", "Cruise = (NOT (P ObstacleNeer));\nBrake = (P ObstacleNeer);\n");
+  const auto d = Checker().check_path(dir_.string());
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].str(), (dir_ / "want.txt").string() + ":1: unknown predicate 'ObstacleNeer'");
+  try {
+    Brian::from_path(dir_.string());
+    FAIL() << "the manual profile loaded a rule base with an unknown name";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), d[0].str());
+  }
+  const std::string input = (dir_ / "in.txt").string();
+  write(input, "Obstacle 50\n---\n");
+  const std::string cmd = std::string(MRT_BRIAN_RUN) + " " + dir_.string() + " " + input + " 2>" +
+                          (dir_ / "err.txt").string() + " >/dev/null";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  std::ifstream err(dir_ / "err.txt");
+  std::string line;
+  std::getline(err, line);
+  EXPECT_EQ(line, d[0].str());
+
+  BrianOptions legacy;
+  legacy.profile = Profile::kLegacy;
+  std::vector<std::string> warnings;
+  legacy.warn = [&](const std::string& w) { warnings.push_back(w); };
+  auto b = Brian::from_path(dir_.string(), legacy);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], d[0].str());
+  // Obstacle 80 is NEAR 0.2 and FAR 0.8: Cruise's CANDO 0.8 passes the
+  // legacy filter, its WANT NOT(<0, 1>) = <1, 1> (the unknown name reads 0);
+  // it proposes FAST 0.8 and SLOW 0.2; Brake's CANDO 0.2 does not pass ->
+  // (30*0.8 + 10*0.2) / 1 = 26.
+  const auto out = b->run({{"Obstacle", 80, 1.0}});
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(out[0].value, 26.0, 1e-5);
 }

@@ -167,15 +167,23 @@ TEST(ManualExamples, BarycenterDefuzzification) {
                mrt::common::ParseError);
 }
 
-// Angle outputs use a circular mean: 350 and 30 with equal weights -> 10.
+// Outputs on a shape declared `(CIRCULAR lo hi)` use a circular mean: 350
+// and 30 with equal weights -> 10 on [0, 360); a heading on a signed range
+// [-180, 180) with -10 and 30 -> 10 as well, and -170 (= 190) and 150 ->
+// their circular mean 170 (the plain mean would be -10).
 TEST(ManualExamples, CircularMeanForAngles) {
-  Defuzzyfier d(parse_shapes("(ANG (SNG (A350 350)) (SNG (A30 30)) (SNG (A90 90)) (SNG (A270 270)))", "s"),
-                parse_associations("(SpeedAngle ANG) (Heading ANG)", "f"));
+  Defuzzyfier d(parse_shapes("(ANG (CIRCULAR 0 360) (SNG (A350 350)) (SNG (A30 30)) (SNG (A90 90)) (SNG (A270 270)))"
+                             "(SIGNED (CIRCULAR -180 180) (SNG (M10 -10)) (SNG (P30 30)) (SNG (M170 -170)) (SNG (P150 150)))",
+                             "s"),
+                parse_associations("(SpeedAngle ANG) (Heading SIGNED)", "f"));
   const CommandList out = d.defuzzify({{"SpeedAngle", "A350", 0.5}, {"SpeedAngle", "A30", 0.5},
-                                       {"Heading", "A350", 0.5}, {"Heading", "A30", 0.5}});
+                                       {"Heading", "M10", 0.5}, {"Heading", "P30", 0.5}});
   ASSERT_EQ(out.size(), 2u);
-  EXPECT_NEAR(out[0].value, 10.0, 1e-9);   // SpeedAngle: circular
-  EXPECT_NEAR(out[1].value, 190.0, 1e-9);  // Heading: not an angle by name, plain mean
+  EXPECT_NEAR(out[0].value, 10.0, 1e-9);  // SpeedAngle: circular on [0, 360)
+  EXPECT_NEAR(out[1].value, 10.0, 1e-9);  // Heading: circular on [-180, 180)
+  const CommandList h = d.defuzzify({{"Heading", "M170", 0.5}, {"Heading", "P150", 0.5}});
+  ASSERT_EQ(h.size(), 1u);
+  EXPECT_NEAR(h[0].value, 170.0, 1e-9);
   // Opposite angles cancel out: no command.
   EXPECT_TRUE(d.defuzzify({{"SpeedAngle", "A90", 0.5}, {"SpeedAngle", "A270", 0.5}}).empty());
 }

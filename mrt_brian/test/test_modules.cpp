@@ -103,6 +103,27 @@ TEST(Modules, ManualProfileWithoutDeletionAveragesAllProposals) {
   EXPECT_NEAR(command(b.run({{"Obstacle", 40, 0.5}}), "Speed"), 11.25, 1e-9);
 }
 
+// §10.4.3: a predicate action in a CANDO/WANT condition (manual profile).
+// Brake's CANDO and WANT are GoingFast. Obstacle 60 (reliability 1): NEAR
+// 0.4, FAR 0.6; Cruise CANDO max = 0.6 (active), WANT NOT near = 0.6;
+// proposals FAST 0.6, SLOW 0.4, weighted 0.36, 0.24 -> ProposedSpeed
+// (30*0.36 + 10*0.24)/0.6 = 22 -> FAST (22-10)/20 = 0.6 = GoingFast.
+// Brake's CANDO, evaluated again before level 2, is 0.6 > 0.49: it runs,
+// deletes Cruise's proposals and proposes STOP 0.6 (weight 0.6) -> Speed 0.
+// Read at the start of the cycle (before any proposal) GoingFast would be
+// 0, Brake inactive and Speed 22.
+TEST(Modules, PredicateActionInCandoAndWant) {
+  const fs::path d = make_base("(GoingFast) => (&DEL.Speed ANY) (Speed STOP);\n");
+  write(d / "Cando.ini", "Cruise = (OR (P ObstacleFar) (P ObstacleNear));\nBrake = (P GoingFast);\n");
+  write(d / "want.txt", "Cruise = (NOT (P ObstacleNear));\nBrake = (P GoingFast);\n");
+  Brian b(ConfigFiles::from_directory(d.string()));
+  EXPECT_NEAR(command(b.run({{"Obstacle", 60, 1.0}}), "Speed"), 0.0, 1e-9);
+  EXPECT_NEAR(b.cando()[static_cast<std::size_t>(b.engine().size() - 1)].value + b.cando()[0].value, 1.2, 1e-9);
+  // Obstacle 20: NEAR 0.8, FAR 0.2, Cruise WANT 0.2: FAST 0.04, SLOW 0.16
+  // -> 14 -> GoingFast 0.2: Brake stays inactive, Speed 14.
+  EXPECT_NEAR(command(b.run({{"Obstacle", 20, 1.0}}), "Speed"), 14.0, 1e-9);
+}
+
 TEST(Modules, ThresholdIsSettable) {
   const fs::path d = make_base("(AND (GoingFast) (ObstacleNear)) => (Speed STOP);\n");
   BrianOptions opt;

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "mrt_brian/brian.h"
 #include "mrt_brian/checker.h"
@@ -102,4 +103,53 @@ TEST(Robustness, DeepNestingIsAnError) {
   std::string deep = "A = ";
   for (int i = 0; i < 100000; ++i) deep += "(NOT ";
   EXPECT_THROW(parse_definitions(deep, "P"), mrt::common::ParseError);
+}
+
+// A flat AND of 100 000 operands is one n-ary node: it compiles and
+// evaluates without recursion. Operands: (D X HIGH) with X = 0.7 on
+// (TOR (HIGH 0 1)) -> 0.7, and once (D X LOW) -> 1 - 0.7 = 0.3 in the middle:
+// AND = min = 0.3; OR over the same operands = max = 0.7.
+TEST(Robustness, FlatAndOfAHundredThousandOperands) {
+  const fs::path d = fs::temp_directory_path() / ("brian_flat_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  std::string ops;
+  for (int i = 0; i < 100000; ++i) ops += i == 50000 ? "(D X LOW)" : "(D X HIGH)";
+  std::ofstream(d / "shape_ctof.txt") << "(S (TOR (HIGH 0 1)) (TOL (LOW 0 1)))\n";
+  std::ofstream(d / "ctof.txt") << "(X S)\n";
+  std::ofstream(d / "Predicate.ini") << "All = (AND " << ops << ");\nAny = (OR " << ops << ");\n";
+  std::ofstream(d / "Cando.ini") << "B = (P All);\nC = (P Any);\n";
+  std::ofstream(d / "want.txt") << "B = (P All);\nC = (P Any);\n";
+  std::ofstream(d / "behavior.txt") << "(level 1 B b.rul)\n(level 1 C c.rul)\n";
+  std::ofstream(d / "b.rul") << "(All) => (Out LO);\n";
+  std::ofstream(d / "c.rul") << "(Any) => (Out2 HI);\n";
+  std::ofstream(d / "s_shape.txt") << "(O (SNG (LO 0)) (SNG (HI 1)))\n";
+  std::ofstream(d / "s_ftoc.txt") << "(Out O)\n(Out2 O)\n";
+  BrianOptions o;
+  o.threshold = 0.2;
+  auto brian = Brian::from_path(d.string(), o);
+  CycleTrace t;
+  brian->run({{"X", 0.7, 1.0}}, &t);
+  std::map<std::string, double> pred;
+  for (const auto& p : t.predicates) pred[p.name] = p.v.value;
+  EXPECT_NEAR(pred["All"], 0.3, 1e-12);
+  EXPECT_NEAR(pred["Any"], 0.7, 1e-12);
+  fs::remove_all(d);
+}
+
+// 10 000 nested NOTs are rejected with a clear error at the 257th level,
+// never a stack overflow.
+TEST(Robustness, TenThousandNestedNotsAreRejectedClearly) {
+  std::string deep = "A = ";
+  for (int i = 0; i < 10000; ++i) deep += "(NOT ";
+  deep += "(D X HIGH)";
+  for (int i = 0; i < 10000; ++i) deep += ")";
+  deep += ";\n";
+  try {
+    parse_definitions(deep, "Predicate.ini");
+    FAIL() << "expected a ParseError";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(e.file(), "Predicate.ini");
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_NE(std::string(e.what()).find("nested deeper than 256 levels"), std::string::npos) << e.what();
+  }
 }

@@ -53,6 +53,20 @@ TEST(BrianRun, TraceHasEveryKindOfLine) {
     EXPECT_NE(r.out.find(kind), std::string::npos) << kind;
 }
 
+// --time: the engine's own time per cycle on the input, in the bench
+// format; the IsAac input has 302 cycles (2 hand-written + 300 random).
+TEST(BrianRun, TimePrintsTheEnginesMicrosecondsPerCycle) {
+  const ToolRun r = run_tool("--profile legacy --time " + kData + "/isaac/bin/BrianConfigs.ini " + kData +
+                             "/isaac/input.txt");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(r.out.find("CMD"), std::string::npos);
+  double us = -1;
+  ASSERT_EQ(std::sscanf(r.out.c_str(), "engine_us_per_cycle: %lf us", &us), 1) << r.out;
+  EXPECT_GT(us, 0.0);
+  EXPECT_LT(us, 1000.0);
+  EXPECT_NE(r.out.find("\ncycles: 302 count\n"), std::string::npos) << r.out;
+}
+
 TEST(BrianRun, BadInputNamesFileAndLine) {
   const fs::path bad = fs::temp_directory_path() / ("brian_bad_input_" + std::to_string(::getpid()) + ".txt");
   std::ofstream(bad) << "x 25\ny 0\n---\nx twenty\n";

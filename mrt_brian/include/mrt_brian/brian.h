@@ -17,6 +17,7 @@
 #include "mrt_brian/config_files.h"
 #include "mrt_brian/defuzzyfier.h"
 #include "mrt_brian/expression.h"
+#include "mrt_brian/expression_compiler.h"
 #include "mrt_brian/fuzzyfier.h"
 #include "mrt_brian/preacher.h"
 #include "mrt_brian/symbol_table.h"
@@ -40,12 +41,15 @@ struct BrianOptions {
   /// Threshold the reliability too (default: legacy yes, manual no).
   std::optional<bool> threshold_reliability;
   WeightComposerKind weight_composer = WeightComposerKind::kMult;
-  /// Default: manual average, legacy max.
+  /// Default: manual average, legacy max; kSelectBest: eq. 10.5.
   std::optional<FloatComposerKind> float_composer;
   DefuzzMethod defuzzification = DefuzzMethod::kSingleton;
   /// Other behaviour kinds, by file extension of the behaviour-list entry
   /// (e.g. ".const"); everything else is a rules file.
   std::map<std::string, BehaviorFactory> behavior_kinds;
+  /// Legacy profile: called once per unknown name (`file:line: message`,
+  /// as brian_check prints it) while loading; default: standard error.
+  std::function<void(const std::string&)> warn;
 };
 
 /// String forms used by the tools and the node ("manual", "legacy",
@@ -99,6 +103,11 @@ class Brian : private HierarchyObserver {
 
  private:
   void build(const ParsedConfig& config);
+  void check_names(const ParsedConfig& config) const;
+  void build_conditions(const ParsedConfig& config, const ExpressionCompiler& compiler);
+  void build_behaviors(const ParsedConfig& config, const ExpressionCompiler& compiler);
+  void allocate_state(const ParsedConfig& config);
+  void reevaluate_conditions(int level);
   void before_level(int level) override;
   void before_behavior(int behavior) override;
   void evaluate_predicate_actions(bool weighted);
@@ -116,6 +125,10 @@ class Brian : private HierarchyObserver {
   Wanter wanter_;
   BehaviorEngine engine_;
   ThresholdFilter want_filter_;  // legacy: the WANT filter
+  // Manual: CANDO/WANT conditions reading predicate actions (§10.4.3) are
+  // evaluated again before each level above the first.
+  bool conditions_read_pacts_ = false;
+  std::vector<FuzzyValue> scratch_cando_, scratch_want_;
 
   // Per-cycle state, allocated once.
   std::vector<double> input_value_, input_rel_;
@@ -123,6 +136,7 @@ class Brian : private HierarchyObserver {
   EvalState state_;
   std::vector<FuzzyValue> cando_, want_;
   std::vector<double> weights_;
+  std::vector<double> scores_;  // CANDO x WANT per behaviour (select-best)
   std::vector<std::uint8_t> active_;
   ProposalList proposals_;
   ComposedActions composed_, scratch_composed_;

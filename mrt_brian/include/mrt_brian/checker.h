@@ -7,21 +7,17 @@
 #include <vector>
 
 #include "mrt_brian/config_files.h"
+#include "mrt_brian/validator.h"
 
 namespace mrt::brian {
 
-struct Diagnostic {
-  std::string file;
-  int line = 0;
-  std::string message;
-  std::string str() const { return file + ":" + std::to_string(line) + ": " + message; }
-};
-
 class Checker {
  public:
-  /// Syntax errors, unknown shapes, data, labels, predicates, behaviours and
-  /// actions, forward references, &DEL at level 1, level gaps, CANDO/WANT of
-  /// undefined behaviours, missing files.
+  /// Syntax errors, missing files and block comments that swallow a
+  /// definition or rule (warnings), then validate()'s rules (the ones the
+  /// loaders apply): unknown shapes, data, labels, predicates, behaviours
+  /// and actions, forward references, &DEL at level 1, level gaps,
+  /// CANDO/WANT of undefined behaviours, duplicates.
   std::vector<Diagnostic> check(const ConfigFiles& files) const;
   /// A directory or a BrianConfigs.ini; a list file that cannot be read is
   /// itself reported.

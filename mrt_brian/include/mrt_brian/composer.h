@@ -12,7 +12,9 @@
 namespace mrt::brian {
 
 enum class WeightComposerKind { kMult, kMax, kMin };
-enum class FloatComposerKind { kAverage, kMax, kMin };
+/// kSelectBest: manual eq. 10.5, the actions of the behaviour with the
+/// largest CANDO x WANT only (as proposed, not weighted).
+enum class FloatComposerKind { kAverage, kMax, kMin, kSelectBest };
 
 class WeightComposer {
  public:
@@ -77,6 +79,10 @@ class Composer {
   Composer() : Composer(WeightComposerKind::kMult, FloatComposerKind::kAverage, {}) {}
   /// `labels_per_action[a]`: number of labels of action a's output shape.
   Composer(WeightComposerKind w, FloatComposerKind f, const std::vector<int>& labels_per_action);
+  /// Manual profile: with `weights`, a behaviour whose weight is 0 (WANT 0)
+  /// contributes nothing, instead of a 0 counted in the average.
+  void set_skip_zero_weight(bool skip) { skip_zero_weight_ = skip; }
+  bool selects_best() const { return select_best_; }
 
   /// Applies the weight composer to each proposal, with the weight of its
   /// owner behaviour, in place.
@@ -85,8 +91,11 @@ class Composer {
   double weight(double value, double w) const { return weight_->compose(value, w); }
   /// Composes `proposals` into `out`; with `weights`, each proposal is first
   /// weighted (without changing the list).
+  /// With select-best, `scores` (CANDO x WANT per behaviour) choose the one
+  /// behaviour whose proposals are kept (the first of equal scores; none
+  /// when `scores` is null or every score is 0).
   void compose(const ProposalList& proposals, const std::vector<double>* weights,
-               ComposedActions& out) const;
+               ComposedActions& out, const std::vector<double>* scores = nullptr) const;
   /// An empty ComposedActions sized for this composer.
   ComposedActions make_output() const;
 
@@ -95,6 +104,8 @@ class Composer {
   std::unique_ptr<FloatComposer> float_;
   std::vector<int> first_;
   int slots_ = 0;
+  bool skip_zero_weight_ = false;
+  bool select_best_ = false;
 };
 
 }  // namespace mrt::brian

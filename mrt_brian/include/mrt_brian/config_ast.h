@@ -15,10 +15,14 @@ struct SetDef {
   int line = 0, column = 0;
 };
 
-/// `(NAME set set ...)` of shape_ctof.txt / s_shape.txt.
+/// `(NAME set set ...)` of shape_ctof.txt / s_shape.txt; an item
+/// `(CIRCULAR lo hi)` declares the shape's range circular (lo == hi), so that
+/// outputs using it are defuzzified with a circular mean over [lo, hi).
 struct ShapeDef {
   std::string name;
   std::vector<SetDef> sets;
+  bool circular = false;
+  double range_lo = 0.0, range_hi = 0.0;
   int line = 0, column = 0;
 };
 

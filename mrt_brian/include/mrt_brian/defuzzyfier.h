@@ -1,8 +1,10 @@
 // Defuzzyfier (manual §10.3.9, §10.4.6): composed actions -> commands,
 // through the output shapes (s_shape.txt) associated with each action
 // (s_ftoc.txt). Singleton: sum(s * mu) / sum(mu); barycenter: centre of area
-// of the polygon sets clipped at their membership. Actions whose name
-// contains "Angle" are angles in degrees and use a circular mean.
+// of the polygon sets clipped at their membership. Actions whose output
+// shape is declared `(CIRCULAR lo hi)` use a circular mean over [lo, hi)
+// (both methods); in the legacy profile an action whose name contains
+// "Angle" is a 2009 angle (degrees, constant 0.01745).
 #pragma once
 
 #include <cstdint>
@@ -37,7 +39,10 @@ class Defuzzyfier {
   int label_count(int action) const { return shape(action).size(); }
   std::vector<int> labels_per_action() const;
   const Shape& shape(int action) const { return shapes_[static_cast<std::size_t>(shape_of_[static_cast<std::size_t>(action)])]; }
-  bool is_angle(int action) const { return is_angle_[static_cast<std::size_t>(action)] != 0; }
+  /// How an action's value wraps around.
+  enum class Wrap : std::uint8_t { kLinear, kCircular, kLegacyAngle };
+  Wrap wrap(int action) const { return wrap_[static_cast<std::size_t>(action)]; }
+  bool is_angle(int action) const { return wrap(action) != Wrap::kLinear; }
 
   /// One value per action; has[a] == 0 when no command (sum of weights 0).
   void defuzzify(const ComposedActions& in, std::vector<double>& value, std::vector<std::uint8_t>& has) const;
@@ -51,13 +56,29 @@ class Defuzzyfier {
 
  private:
   double singleton_point(int action, int label) const;
+  bool barycenter(int action, const ComposedActions& in, double* out) const;
+  bool singleton_linear(int action, const ComposedActions& in, double* out) const;
+  bool singleton_circular(int action, const ComposedActions& in, double* out) const;
+  bool singleton_legacy_angle(int action, const ComposedActions& in, double* out) const;
+  /// [lo, lo + period) of a circular action, and the angle of x in it.
+  /// (A legacy angle: [0, 360).)
+  double range_lo(int action) const { return wrap(action) == Wrap::kCircular ? shape(action).range_lo() : 0.0; }
+  double period(int action) const {
+    return wrap(action) == Wrap::kCircular ? shape(action).range_hi() - shape(action).range_lo() : 360.0;
+  }
+  /// A circular mean (sum mu cos, sum mu sin) back to [lo, hi); false when
+  /// the vectors cancel out (|sum| <= 1e-12 sum mu).
+  bool from_circle(int action, double c, double s, double w, double* out) const;
   std::vector<Shape> shapes_;
   // [shape][label]: the outlines barycenter defuzzification clips, built
   // once (FuzzySet::polygons() allocates).
   std::vector<std::vector<std::vector<Polygon>>> polygons_;
   SymbolTable actions_;
   std::vector<int> shape_of_;
-  std::vector<std::uint8_t> is_angle_;
+  std::vector<Wrap> wrap_;
+  // Singleton points by action, flat (points_[point_first_[a] + label]).
+  std::vector<double> points_;
+  std::vector<int> point_first_;
   DefuzzMethod method_ = DefuzzMethod::kSingleton;
   Profile profile_ = Profile::kManual;
 };

@@ -2,6 +2,7 @@
 // one FuzzySet subclass per shape.
 #pragma once
 
+#include <complex>
 #include <memory>
 #include <string>
 #include <utility>
@@ -129,5 +130,10 @@ struct AreaMoment {
   double moment = 0.0;
 };
 AreaMoment clipped_area(const Polygon& outline, double height);
+
+/// Circular moment of min(outline, height) on a circular range starting at
+/// `lo` with `k` = 2 pi / period: the integral of mu(x) e^{i k (x - lo)} dx
+/// (its argument is the circular barycenter, its modulus <= the area).
+std::complex<double> clipped_circular_moment(const Polygon& outline, double height, double lo, double k);
 
 }  // namespace mrt::brian

@@ -24,6 +24,17 @@ std::string describe(const Token& t);
 std::vector<Token> tokenize(const std::string& text, bool comments = true,
                             bool block_comments = true);
 
+/// A `#( ... ;` block comment: the line of its '#', the line of the ';'
+/// that ends it (or of the end of the text), and whether it contains '='
+/// (`swallows`: it ate a definition `Name = ...;`) or '=>' (`rule`).
+struct BlockComment {
+  int line = 0, end_line = 0;
+  bool swallows = false, rule = false;
+};
+/// The block comments of a predicate, CANDO, WANT or rule file, found as
+/// tokenize() skips them.
+std::vector<BlockComment> find_block_comments(const std::string& text);
+
 /// Cursor over a token vector that throws mrt::common::ParseError.
 class TokenStream {
  public:

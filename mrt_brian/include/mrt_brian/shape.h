@@ -26,9 +26,20 @@ class Shape {
   const FuzzySet& set(int i) const { return *sets_.at(static_cast<std::size_t>(i)); }
   /// Index of the set labelled `label`, or -1.
   int find(const std::string& label) const;
+  /// Declared `(CIRCULAR lo hi)`: the range [lo, hi) wraps around.
+  bool circular() const { return circular_; }
+  double range_lo() const { return range_lo_; }
+  double range_hi() const { return range_hi_; }
+  void set_circular(double lo, double hi) {
+    circular_ = true;
+    range_lo_ = lo;
+    range_hi_ = hi;
+  }
 
  private:
   std::string name_;
+  bool circular_ = false;
+  double range_lo_ = 0.0, range_hi_ = 0.0;
   std::vector<std::shared_ptr<const FuzzySet>> sets_;
 };
 
