@@ -81,7 +81,7 @@ void write_result_row(std::ostream& out, const std::string& frame, const Result&
     s << r.alternative->pose.x << ',' << r.alternative->pose.y << ',' << std::setprecision(5)
       << r.alternative->pose.theta << ',' << std::setprecision(4) << r.alternative->evidence;
   else
-    s << ",,";
+    s << ",,,";
   s << ',' << std::setprecision(3) << r.time_ms << '\n';
   out << s.str();
 }

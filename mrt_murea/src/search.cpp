@@ -52,10 +52,10 @@ class Search {
     const double ref = best_ ? best_->evidence : incumbent_.evidence;
     return have_incumbent_ ? ref - opt_.ambiguity_margin : -std::numeric_limits<double>::infinity();
   }
-  void push(const Cell& c);
+  void push(const Cell& c, double cap);
   std::vector<Cell> children(const Cell& c) const;
-  void split(const Cell& c) {
-    for (const Cell& k : children(c)) push(k);
+  void split(const Node& c) {
+    for (const Cell& k : children(c.cell)) push(k, c.bound);
   }
   bool in_zone(const Cell& c) const;
   Hypothesis hypothesis(const Node& n) const {
@@ -77,9 +77,12 @@ class Search {
   friend class Localizer;
 };
 
-void Search::push(const Cell& c) {
+// Evaluates a cell and queues it unless it cannot matter. A child's bound
+// is capped by its parent's (both bound the child's evidence), so bounds
+// never grow down the tree; a leaf's value is exact and below the cap.
+void Search::push(const Cell& c, double cap) {
   const double f = floor();
-  const double b = loc_.score(ps_, c, f);
+  const double b = std::min(cap, loc_.score(ps_, c, f));
   ++cells_;
   if (b < f - 1e-9) return;
   Node n{c, b, volume(c)};
@@ -156,7 +159,7 @@ Hypothesis Search::dive() {
 Result Search::run() {
   Result r;
   r.percepts = ps_.size();
-  push(loc_.root());
+  push(loc_.root(), std::numeric_limits<double>::infinity());
   bool cut = false;
   while (!queue_.empty()) {
     if (timed_out()) { cut = true; break; }
@@ -164,7 +167,7 @@ Result Search::run() {
     queue_.pop();
     if (n.bound < floor() - 1e-9) break;  // nothing left can matter
     if (best_ && in_zone(n.cell)) continue;
-    if (!n.cell.leaf()) { split(n.cell); continue; }
+    if (!n.cell.leaf()) { split(n); continue; }
     if (!best_) { best_ = hypothesis(n); continue; }  // phase 2: look for the runner-up
     r.alternative = hypothesis(n);
     break;
