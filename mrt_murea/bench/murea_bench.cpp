@@ -3,6 +3,8 @@
 // random poses; then the first M of them by exhaustive evaluation of the
 // lattice (identical best evidence asserted) for the speed-up.
 // Usage: murea_bench [N=1000] [M=3] [world=<package>/test/data/msl_field.yaml]
+// Two noise levels: "global" (1 cm + 1 %, 0.01 rad, 5 m, 2 spurious
+// points) and "global_sim_noise" (the simulator's 2 %, 0.01 rad, 6 m, 10).
 // Prints `name: value unit` lines.
 #include <algorithm>
 #include <cmath>
@@ -24,25 +26,35 @@ using mrt::murea::Percept;
 
 namespace {
 
+// How the simulated camera errs.
+struct Noise {
+  double range = 5.0;        // m, vision range
+  double sigma_d0 = 0.01;    // m, distance noise: sigma_d0 + sigma_d1 * distance
+  double sigma_d1 = 0.01;
+  double sigma_b = 0.01;     // rad, bearing noise
+  int spurious = 2;          // random line points added per frame
+};
+
 // What the robot's camera would report at `pose`: the simulator's vision
 // percepts (occlusion by goals included), only Line and Goal (colour
-// removed), within 5 m; distance noise 1 cm + 1 %, bearing noise 0.01 rad;
-// reliability falling with range; two spurious line points per frame.
-std::vector<Percept> simulate(const mrt::sim::World& w, const mrt::common::Pose2D& pose, std::mt19937_64& rng) {
+// removed), within noise.range; Gaussian distance and bearing noise;
+// reliability falling with range; spurious line points at random.
+std::vector<Percept> simulate(const mrt::sim::World& w, const mrt::common::Pose2D& pose, const Noise& nz,
+                              std::mt19937_64& rng) {
   mrt::sim::SensorsConfig cfg;
-  cfg.vision_range = 5.0;
+  cfg.vision_range = nz.range;
   cfg.line_point_spacing = 0.25;
   std::normal_distribution<double> n01(0.0, 1.0);
   std::vector<Percept> out;
   for (const auto& s : mrt::sim::vision_percepts(w, {}, pose, cfg)) {
     const auto cls = mrt::murea::parse_feature_class(s.membership_class);
     if (!cls || (*cls != FeatureClass::Line && *cls != FeatureClass::Goal)) continue;
-    const double r = std::max(0.0, s.distance + (0.01 + 0.01 * s.distance) * n01(rng));
+    const double r = std::max(0.0, s.distance + (nz.sigma_d0 + nz.sigma_d1 * s.distance) * n01(rng));
     const double rel = *cls == FeatureClass::Goal ? 0.8 : std::max(0.3, 1.0 - 0.1 * s.distance);
-    out.push_back({*cls, "", r, s.bearing + 0.01 * n01(rng), rel});
+    out.push_back({*cls, "", r, s.bearing + nz.sigma_b * n01(rng), rel});
   }
-  std::uniform_real_distribution<double> range(0.5, 5.0), bearing(-kPi, kPi);
-  for (int i = 0; i < 2; ++i) out.push_back({FeatureClass::Line, "", range(rng), bearing(rng), 0.3});
+  std::uniform_real_distribution<double> range(0.5, nz.range), bearing(-kPi, kPi);
+  for (int i = 0; i < nz.spurious; ++i) out.push_back({FeatureClass::Line, "", range(rng), bearing(rng), 0.3});
   return out;
 }
 
@@ -56,6 +68,57 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5))];
 }
 
+struct Frame {
+  mrt::common::Pose2D truth;
+  std::vector<Percept> percepts;
+  mrt::murea::Result result;
+};
+
+// Localizes n random poses of the field; prints the metrics prefixed by `name`.
+std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, const mrt::murea::Localizer& loc,
+                       const Noise& nz, int n) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> ux(-9.0, 9.0), uy(-6.0, 6.0), ut(-kPi, kPi);
+  std::vector<double> times, cells, sizes, err_xy, err_t;
+  std::vector<Frame> frames;
+  int correct = 0, flagged = 0, timeouts = 0;
+  for (int i = 0; i < n; ++i) {
+    Frame f;
+    f.truth = mrt::common::Pose2D(ux(rng), uy(rng), ut(rng));
+    const mrt::common::Pose2D mirror(-f.truth.x, -f.truth.y, f.truth.theta + kPi);
+    f.percepts = simulate(world, f.truth, nz, rng);
+    f.result = loc.localize(f.percepts);
+    const mrt::murea::Result& r = f.result;
+    times.push_back(r.time_ms);
+    cells.push_back(static_cast<double>(r.cells));
+    sizes.push_back(static_cast<double>(f.percepts.size()));
+    timeouts += r.complete ? 0 : 1;
+    flagged += r.ambiguous ? 1 : 0;
+    const bool on_truth = near(r.best.pose, f.truth);
+    const mrt::common::Pose2D& ref = on_truth ? f.truth : mirror;
+    const bool alt_ok = r.alternative && near(r.alternative->pose, on_truth ? mirror : f.truth);
+    if ((on_truth || near(r.best.pose, mirror)) && alt_ok) ++correct;
+    err_xy.push_back(std::hypot(r.best.pose.x - ref.x, r.best.pose.y - ref.y));
+    err_t.push_back(mrt::common::rad_to_deg(std::abs(angle_diff(r.best.pose.theta, ref.theta))));
+    frames.push_back(std::move(f));
+  }
+  const double pct = 100.0 / std::max(1, n);
+  std::cout << name << "_poses: " << n << " count\n"
+            << name << "_correct_and_flagged_ambiguous: " << correct * pct << " %\n"
+            << name << "_ambiguous_flagged: " << flagged * pct << " %\n"
+            << name << "_timeouts: " << timeouts << " count\n"
+            << name << "_percepts_per_frame_median: " << percentile(sizes, 0.5) << " count\n"
+            << name << "_time_median: " << percentile(times, 0.5) << " ms\n"
+            << name << "_time_p95: " << percentile(times, 0.95) << " ms\n"
+            << name << "_time_max: " << percentile(times, 1.0) << " ms\n"
+            << name << "_cells_median: " << percentile(cells, 0.5) << " count\n"
+            << name << "_error_xy_median: " << percentile(err_xy, 0.5) << " m\n"
+            << name << "_error_xy_p95: " << percentile(err_xy, 0.95) << " m\n"
+            << name << "_error_theta_median: " << percentile(err_t, 0.5) << " deg\n"
+            << name << "_error_theta_p95: " << percentile(err_t, 0.95) << " deg\n";
+  return frames;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,58 +129,27 @@ int main(int argc, char** argv) {
   world.movers.clear();
   world.ball.enabled = false;
   const mrt::murea::FeatureMap map(world);
-  mrt::murea::SearchOptions opt;  // 5 cm, 1 degree
-  const mrt::murea::Localizer loc(map, opt);
+  const mrt::murea::Localizer loc(map, mrt::murea::SearchOptions{});  // 5 cm, 1 degree
 
-  std::mt19937_64 rng(2026);
-  std::uniform_real_distribution<double> ux(-9.0, 9.0), uy(-6.0, 6.0), ut(-kPi, kPi);
-  std::vector<double> times, cells;
-  std::vector<std::vector<Percept>> frames;
-  std::vector<mrt::murea::Result> results;
-  int correct = 0, flagged = 0, timeouts = 0;
-  for (int i = 0; i < n; ++i) {
-    const mrt::common::Pose2D truth(ux(rng), uy(rng), ut(rng));
-    const mrt::common::Pose2D mirror(-truth.x, -truth.y, truth.theta + kPi);
-    frames.push_back(simulate(world, truth, rng));
-    const mrt::murea::Result r = loc.localize(frames.back());
-    results.push_back(r);
-    times.push_back(r.time_ms);
-    cells.push_back(static_cast<double>(r.cells));
-    timeouts += r.complete ? 0 : 1;
-    flagged += r.ambiguous ? 1 : 0;
-    const bool best_ok = near(r.best.pose, truth) || near(r.best.pose, mirror);
-    const bool alt_ok = r.alternative && (near(r.best.pose, truth) ? near(r.alternative->pose, mirror)
-                                                                     : near(r.alternative->pose, truth));
-    if (best_ok && alt_ok) ++correct;
-    else std::cerr << "miss: truth " << truth.x << ' ' << truth.y << ' ' << truth.theta << " best "
-                   << r.best.pose.x << ' ' << r.best.pose.y << ' ' << r.best.pose.theta << " ev " << r.best.evidence
-                   << " amb " << r.ambiguous << '\n';
-  }
-  std::cout << "poses: " << n << " count\n"
-            << "correct_and_flagged_ambiguous: " << 100.0 * correct / std::max(1, n) << " %\n"
-            << "ambiguous_flagged: " << 100.0 * flagged / std::max(1, n) << " %\n"
-            << "timeouts: " << timeouts << " count\n"
-            << "percepts_per_frame_median: " << percentile([&] {
-                 std::vector<double> v;
-                 for (const auto& f : frames) v.push_back(static_cast<double>(f.size()));
-                 return v;
-               }(), 0.5) << " count\n"
-            << "time_median: " << percentile(times, 0.5) << " ms\n"
-            << "time_p95: " << percentile(times, 0.95) << " ms\n"
-            << "time_max: " << percentile(times, 1.0) << " ms\n"
-            << "cells_median: " << percentile(cells, 0.5) << " count\n";
+  const std::vector<Frame> frames = run("global", world, loc, Noise{}, n);
+  // The simulator's own default camera noise (2 % of the distance, 0.01
+  // rad), its 6 m range, and 10 spurious points per frame.
+  run("global_sim_noise", world, loc, Noise{6.0, 0.0, 0.02, 0.01, 10}, n);
+
   double t_search = 0.0, t_exh = 0.0;
   int identical = 0;
-  for (int i = 0; i < std::min(m, n); ++i) {
-    const mrt::murea::Result e = loc.exhaustive(frames[i]);
+  const int checked = std::min(m, n);
+  for (int i = 0; i < checked; ++i) {
+    const mrt::murea::Result e = loc.exhaustive(frames[i].percepts);
     t_exh += e.time_ms;
-    t_search += results[i].time_ms;
-    if (std::abs(e.best.evidence - results[i].best.evidence) <= 1e-9) ++identical;
-    else std::cerr << "NOT EXACT: frame " << i << " search " << results[i].best.evidence << " exhaustive " << e.best.evidence << '\n';
+    t_search += frames[i].result.time_ms;
+    if (e.best.evidence == frames[i].result.best.evidence) ++identical;
+    else std::cerr << "NOT EXACT: frame " << i << " search " << frames[i].result.best.evidence << " exhaustive "
+                   << e.best.evidence << '\n';
   }
-  std::cout << "exhaustive_checked: " << std::min(m, n) << " count\n"
+  std::cout << "exhaustive_checked: " << checked << " count\n"
             << "exhaustive_identical_best_evidence: " << identical << " count\n"
-            << "exhaustive_time_mean: " << t_exh / std::max(1, std::min(m, n)) << " ms\n"
+            << "exhaustive_time_mean: " << t_exh / std::max(1, checked) << " ms\n"
             << "speedup_vs_exhaustive: " << (t_search > 0 ? t_exh / t_search : 0.0) << " x\n";
-  return identical == std::min(m, n) ? 0 : 1;
+  return identical == checked ? 0 : 1;
 }
