@@ -79,7 +79,7 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
                        const Noise& nz, int n) {
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> ux(-9.0, 9.0), uy(-6.0, 6.0), ut(-kPi, kPi);
-  std::vector<double> times, cells, sizes, err_xy, err_t;
+  std::vector<double> times, cells, sizes, err_xy, err_t, est_xy, est_t;
   std::vector<Frame> frames;
   int correct = 0, flagged = 0, timeouts = 0;
   for (int i = 0; i < n; ++i) {
@@ -100,6 +100,8 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
     if ((on_truth || near(r.best.pose, mirror)) && alt_ok) ++correct;
     err_xy.push_back(std::hypot(r.best.pose.x - ref.x, r.best.pose.y - ref.y));
     err_t.push_back(mrt::common::rad_to_deg(std::abs(angle_diff(r.best.pose.theta, ref.theta))));
+    est_xy.push_back(std::hypot(r.estimate.mean.x - ref.x, r.estimate.mean.y - ref.y));
+    est_t.push_back(mrt::common::rad_to_deg(std::abs(angle_diff(r.estimate.mean.theta, ref.theta))));
     frames.push_back(std::move(f));
   }
   const double pct = 100.0 / std::max(1, n);
@@ -115,7 +117,11 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
             << name << "_error_xy_median: " << percentile(err_xy, 0.5) << " m\n"
             << name << "_error_xy_p95: " << percentile(err_xy, 0.95) << " m\n"
             << name << "_error_theta_median: " << percentile(err_t, 0.5) << " deg\n"
-            << name << "_error_theta_p95: " << percentile(err_t, 0.95) << " deg\n";
+            << name << "_error_theta_p95: " << percentile(err_t, 0.95) << " deg\n"
+            << name << "_plateau_mean_error_xy_median: " << percentile(est_xy, 0.5) << " m\n"
+            << name << "_plateau_mean_error_xy_p95: " << percentile(est_xy, 0.95) << " m\n"
+            << name << "_plateau_mean_error_theta_median: " << percentile(est_t, 0.5) << " deg\n"
+            << name << "_plateau_mean_error_theta_p95: " << percentile(est_t, 0.95) << " deg\n";
   return frames;
 }
 

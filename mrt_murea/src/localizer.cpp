@@ -130,6 +130,70 @@ double Localizer::evidence(const Pose2D& pose, const std::vector<Percept>& perce
   return sum;
 }
 
+// The plateau's lattice poses in the box of half-sizes (hi, hj, hk)
+// indices around (ci, cj, ck); theta unwrapped around ck. Sets *face when
+// one of them lies on a face of the box.
+std::vector<std::array<double, 3>> Localizer::plateau_box(const std::vector<Prepared>& ps, double evidence,
+                                                           const long c[3], const long h[3], bool* face) const {
+  std::vector<std::array<double, 3>> members;
+  *face = false;
+  for (long k = c[2] - h[2]; k <= c[2] + h[2]; ++k)
+    for (long j = std::max(0L, c[1] - h[1]); j <= std::min<long>(ny_ - 1, c[1] + h[1]); ++j)
+      for (long i = std::max(0L, c[0] - h[0]); i <= std::min<long>(nx_ - 1, c[0] + h[0]); ++i) {
+        const auto kk = static_cast<std::uint32_t>(((k % static_cast<long>(nt_)) + nt_) % nt_);
+        const auto ii = static_cast<std::uint32_t>(i), jj = static_cast<std::uint32_t>(j);
+        if (score(ps, Cell{ii, ii + 1, jj, jj + 1, kk, kk + 1}, evidence) < evidence - kGuard) continue;
+        members.push_back({x_at(ii), y_at(jj), (k - c[2]) * dt_});
+        *face = *face || (h[0] > 0 && std::abs(i - c[0]) == h[0]) || (h[1] > 0 && std::abs(j - c[1]) == h[1]) ||
+                (h[2] > 0 && std::abs(k - c[2]) == h[2]);
+      }
+  return members;
+}
+
+Estimate Localizer::plateau(const Hypothesis& best, const std::vector<Percept>& percepts) const {
+  const std::vector<Prepared> ps = prepare(percepts);
+  const auto index = [](double v, double lo, double d) { return d > 0.0 ? std::lround((v - lo) / d) : 0L; };
+  long c[3] = {index(best.pose.x, min_x_, dx_), index(best.pose.y, min_y_, dy_),
+               std::lround((best.pose.theta + kPi) / dt_)};
+  const long h[3] = {dx_ > 0.0 ? static_cast<long>(opt_.plateau_xy / dx_) : 0,
+                     dy_ > 0.0 ? static_cast<long>(opt_.plateau_xy / dy_) : 0,
+                     std::min<long>(static_cast<long>(opt_.plateau_theta / dt_), (nt_ - 1) / 2)};
+  Estimate e;
+  e.mean = best.pose;
+  // The best may lie on the plateau's edge: centre the box on the mean
+  // found and look again, a few times.
+  for (int pass = 0; pass < 3; ++pass) {
+    bool face = false;
+    const auto members = plateau_box(ps, best.evidence, c, h, &face);
+    if (members.empty()) return e;  // `best` is not a lattice pose of maximal evidence
+    const double n = static_cast<double>(members.size());
+    double sx = 0, sy = 0, sc = 0, ss = 0;
+    for (const auto& m : members) {
+      sx += m[0];
+      sy += m[1];
+      sc += std::cos(m[2]);
+      ss += std::sin(m[2]);
+    }
+    const double mt = std::atan2(ss, sc), box_theta = -kPi + c[2] * dt_;
+    e.mean = Pose2D(sx / n, sy / n, box_theta + mt);
+    e.poses = members.size();
+    e.truncated = face;
+    e.covariance.fill(0.0);
+    for (const auto& m : members) {
+      const double d[3] = {m[0] - sx / n, m[1] - sy / n, m[2] - mt};
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) e.covariance[3 * a + b] += d[a] * d[b] / n;
+    }
+    e.covariance[0] += dx_ * dx_ / 12.0;
+    e.covariance[4] += dy_ * dy_ / 12.0;
+    e.covariance[8] += dt_ * dt_ / 12.0;
+    const long next[3] = {index(e.mean.x, min_x_, dx_), index(e.mean.y, min_y_, dy_), c[2] + std::lround(mt / dt_)};
+    if (!face || (next[0] == c[0] && next[1] == c[1] && next[2] == c[2])) break;
+    std::copy(next, next + 3, c);
+  }
+  return e;
+}
+
 Result Localizer::exhaustive(const std::vector<Percept>& percepts) const {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Prepared> ps = prepare(percepts);

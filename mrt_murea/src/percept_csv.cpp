@@ -74,8 +74,8 @@ void write_result_header(std::ostream& out) {
 
 void write_result_row(std::ostream& out, const std::string& frame, const Result& r) {
   std::ostringstream s;
-  s << std::fixed << std::setprecision(4) << frame << ',' << r.best.pose.x << ',' << r.best.pose.y << ','
-    << std::setprecision(5) << r.best.pose.theta << ',' << std::setprecision(4) << r.best.evidence << ','
+  s << std::fixed << std::setprecision(4) << frame << ',' << r.estimate.mean.x << ',' << r.estimate.mean.y << ','
+    << std::setprecision(5) << r.estimate.mean.theta << ',' << std::setprecision(4) << r.best.evidence << ','
     << (r.ambiguous ? 1 : 0) << ',';
   if (r.alternative)
     s << r.alternative->pose.x << ',' << r.alternative->pose.y << ',' << std::setprecision(5)

@@ -192,7 +192,11 @@ Result Localizer::localize(const std::vector<Percept>& percepts) const {
     r.complete = true;
     return r;
   }
-  return s.run();
+  Result r = s.run();
+  if (r.complete) r.estimate = plateau(r.best, percepts);
+  else r.estimate.mean = r.best.pose;
+  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.start_).count();
+  return r;
 }
 
 }  // namespace mrt::murea

@@ -96,7 +96,8 @@ TEST(PerceptCsv, MalformedRowsNameFileLineAndColumn) {
 
 TEST(PerceptCsv, ResultRowWithAndWithoutRunnerUp) {
   Result r;
-  r.best = {Pose2D(1, -2, 0.5), 7.25};
+  r.best = {Pose2D(1.05, -2.05, 0.45), 7.25};
+  r.estimate.mean = Pose2D(1, -2, 0.5);  // x, y, theta come from the estimate
   r.time_ms = 3.5;
   std::ostringstream out;
   write_result_header(out);

@@ -47,6 +47,22 @@ TEST(Search, CorridorWithItsEndIsUnique) {
   expect_near(r.best.pose, 3, 0, 0);
   EXPECT_FALSE(r.ambiguous);
   EXPECT_EQ(r.percepts, 5u);
+  // The plateau of evidence 5: the end wall allows |x - 3| <= 0.11 (its
+  // tolerance at 2 m) whatever y and theta; the side walls and the points
+  // (4, +-1) are symmetric about y = 0 and theta = 0, so is the lattice:
+  // the plateau's mean is (3, 0, 0) in y and theta. In x it is pushed up
+  // by 2 (1 - cos theta) averaged over the plateau's headings (about
+  // 0.005) and by where the 2.5 cm pixels' edges fall: within 3 cm.
+  const Estimate& e = r.estimate;
+  EXPECT_GT(e.poses, 10u);
+  EXPECT_FALSE(e.truncated);
+  EXPECT_NEAR(e.mean.x, 3.0, 0.03);
+  EXPECT_NEAR(e.mean.y, 0.0, 0.01);
+  EXPECT_NEAR(e.mean.theta, 0.0, mrt::common::deg_to_rad(0.5));
+  // x spreads over about +-0.11 m: a variance near 0.11^2 / 3 = 0.004.
+  EXPECT_GT(e.covariance[0], 0.002);
+  EXPECT_LT(e.covariance[0], 0.006);
+  EXPECT_DOUBLE_EQ(e.covariance[1], e.covariance[3]);  // symmetric
 }
 
 // Seeing only the side walls, every x along the corridor (facing +x or -x)

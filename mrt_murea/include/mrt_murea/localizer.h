@@ -40,6 +40,8 @@ struct SearchOptions {
   std::array<Tolerance, kFeatureClassCount> tolerance{
       Tolerance{0.05, 0.03}, Tolerance{0.3, 0.03}, Tolerance{0.2, 0.03}, Tolerance{0.2, 0.03},
       Tolerance{0.05, 0.03}};                // Line, Goal, GoalPost, Landmark, Wall
+  double plateau_xy = 0.3;                   // m, half-size of the plateau box
+  double plateau_theta = 0.17453292519943295;  // rad (10 deg)
   /// Region searched [min_x, min_y, max_x, max_y]; empty = the map's bounds.
   std::optional<std::array<double, 4>> region;
 };
@@ -49,8 +51,20 @@ struct Hypothesis {
   double evidence = 0.0;
 };
 
+/// The plateau of most evidence around the best pose: the lattice poses
+/// within plateau_xy and plateau_theta of it (a box) whose evidence equals
+/// the best's; their mean (circular in theta) and covariance (row-major
+/// x, y, theta; plus the lattice's quantisation variance d^2 / 12).
+struct Estimate {
+  Pose2D mean;
+  std::array<double, 9> covariance{};
+  std::size_t poses = 0;   // lattice poses of the plateau
+  bool truncated = false;  // the plateau reaches the box's faces
+};
+
 struct Result {
   Hypothesis best;
+  Estimate estimate;         // filled in when the search completed
   /// The best lattice pose outside the exclusion zone of `best` (farther
   /// than alt_distance or turned more than alt_angle) whose evidence is at
   /// least best - ambiguity_margin; nullopt when there is none.
@@ -80,6 +94,9 @@ class Localizer {
   /// slow). Only `best` and `cells` (= lattice poses) are filled in.
   Result exhaustive(const std::vector<Percept>& percepts) const;
 
+  /// The plateau of `best` (a lattice pose and its evidence); see Estimate.
+  Estimate plateau(const Hypothesis& best, const std::vector<Percept>& percepts) const;
+
   /// Evidence of any pose: sum of reliabilities of the percepts that land
   /// within their tolerance of a matching feature (map distance function).
   double evidence(const Pose2D& pose, const std::vector<Percept>& percepts) const;
@@ -108,6 +125,8 @@ class Localizer {
  private:
   friend class Search;
   double score(const std::vector<Prepared>& ps, const Cell& c, double floor) const;
+  std::vector<std::array<double, 3>> plateau_box(const std::vector<Prepared>& ps, double evidence, const long c[3],
+                                                 const long h[3], bool* face) const;
   double x_at(std::uint32_t i) const { return min_x_ + i * dx_; }
   double y_at(std::uint32_t j) const { return min_y_ + j * dy_; }
   double t_at(std::uint32_t k) const;

@@ -36,7 +36,8 @@ std::vector<PerceptFrame> read_percept_csv(std::istream& in, const std::string& 
 std::vector<PerceptFrame> load_percept_csv(const std::string& path);
 
 /// Output: `frame,x,y,theta,evidence,ambiguous,alt_x,alt_y,alt_theta,alt_evidence,time_ms`;
-/// the alt_ fields are empty when there is no runner-up.
+/// x, y, theta are the estimate (the plateau's mean, see Estimate),
+/// evidence the best's; the alt_ fields are empty when there is no runner-up.
 void write_result_header(std::ostream& out);
 void write_result_row(std::ostream& out, const std::string& frame, const Result& r);
 
