@@ -41,8 +41,18 @@ Localizer::Localizer(const FeatureMap& map, const SearchOptions& o) : map_(map),
   dy_ = ny_ > 1 ? (r[3] - r[1]) / (ny_ - 1) : 0.0;
   if (!(o.accuracy_theta > 0.0) || o.accuracy_theta > 2.0 * kPi)
     throw std::invalid_argument("Localizer: expected 0 < accuracy_theta <= 2 pi");
-  nt_ = static_cast<std::uint32_t>(std::ceil(2.0 * kPi / o.accuracy_theta - 1e-9));
-  dt_ = 2.0 * kPi / nt_;
+  wrap_ = !o.heading_range;
+  if (wrap_) {
+    nt_ = static_cast<std::uint32_t>(std::ceil(2.0 * kPi / o.accuracy_theta - 1e-9));
+    dt_ = 2.0 * kPi / nt_;
+    t0_ = -kPi;
+  } else {
+    const auto [lo, hi] = *o.heading_range;
+    if (!std::isfinite(lo) || !(hi - lo < 2.0 * kPi)) throw std::invalid_argument("Localizer: expected min <= max < min + 2 pi in heading_range");
+    nt_ = lattice_count(hi - lo, o.accuracy_theta, "accuracy_theta");
+    dt_ = nt_ > 1 ? (hi - lo) / (nt_ - 1) : 0.0;
+    t0_ = lo;
+  }
   for (const Tolerance& t : o.tolerance)
     if (!(t.base >= 0.0) || !(t.per_metre >= 0.0))
       throw std::invalid_argument("Localizer: expected non-negative tolerances");
@@ -50,13 +60,13 @@ Localizer::Localizer(const FeatureMap& map, const SearchOptions& o) : map_(map),
     throw std::invalid_argument("Localizer: expected non-negative alt_distance, alt_angle, ambiguity_margin, timeout");
 }
 
-double Localizer::t_at(std::uint32_t k) const { return -kPi + k * dt_; }
+double Localizer::t_at(std::uint32_t k) const { return t0_ + k * dt_; }
 
 Pose2D Localizer::lattice_pose(std::uint32_t i, std::uint32_t j, std::uint32_t k) const {
   Pose2D p;
   p.x = x_at(i);
   p.y = y_at(j);
-  p.theta = t_at(k);  // already in [-pi, pi)
+  p.theta = mrt::common::normalize_angle(t_at(k));
   return p;
 }
 
@@ -64,7 +74,7 @@ void Localizer::cell_geometry(const Cell& c, double* cx, double* cy, double* ct,
                               double* ht) const {
   *cx = min_x_ + 0.5 * (c.x0 + c.x1 - 1) * dx_;
   *cy = min_y_ + 0.5 * (c.y0 + c.y1 - 1) * dy_;
-  *ct = -kPi + 0.5 * (c.t0 + c.t1 - 1) * dt_;
+  *ct = t0_ + 0.5 * (c.t0 + c.t1 - 1) * dt_;
   *hx = 0.5 * (c.x1 - c.x0 - 1) * dx_;
   *hy = 0.5 * (c.y1 - c.y0 - 1) * dy_;
   *ht = 0.5 * (c.t1 - c.t0 - 1) * dt_;
@@ -140,6 +150,7 @@ std::vector<std::array<double, 3>> Localizer::plateau_box(const std::vector<Prep
   for (long k = c[2] - h[2]; k <= c[2] + h[2]; ++k)
     for (long j = std::max(0L, c[1] - h[1]); j <= std::min<long>(ny_ - 1, c[1] + h[1]); ++j)
       for (long i = std::max(0L, c[0] - h[0]); i <= std::min<long>(nx_ - 1, c[0] + h[0]); ++i) {
+        if (!wrap_ && (k < 0 || k >= static_cast<long>(nt_))) continue;
         const auto kk = static_cast<std::uint32_t>(((k % static_cast<long>(nt_)) + nt_) % nt_);
         const auto ii = static_cast<std::uint32_t>(i), jj = static_cast<std::uint32_t>(j);
         if (score(ps, Cell{ii, ii + 1, jj, jj + 1, kk, kk + 1}, evidence) < evidence - kGuard) continue;
@@ -153,11 +164,13 @@ std::vector<std::array<double, 3>> Localizer::plateau_box(const std::vector<Prep
 Estimate Localizer::plateau(const Hypothesis& best, const std::vector<Percept>& percepts) const {
   const std::vector<Prepared> ps = prepare(percepts);
   const auto index = [](double v, double lo, double d) { return d > 0.0 ? std::lround((v - lo) / d) : 0L; };
-  long c[3] = {index(best.pose.x, min_x_, dx_), index(best.pose.y, min_y_, dy_),
-               std::lround((best.pose.theta + kPi) / dt_)};
+  double turn = std::fmod(best.pose.theta - t0_, 2.0 * kPi);  // from the first heading, in [0, 2 pi)
+  if (turn < 0.0) turn += 2.0 * kPi;
+  long c[3] = {index(best.pose.x, min_x_, dx_), index(best.pose.y, min_y_, dy_), index(turn, 0.0, dt_)};
+  const long ht = dt_ > 0.0 ? static_cast<long>(opt_.plateau_theta / dt_) : 0;
   const long h[3] = {dx_ > 0.0 ? static_cast<long>(opt_.plateau_xy / dx_) : 0,
                      dy_ > 0.0 ? static_cast<long>(opt_.plateau_xy / dy_) : 0,
-                     std::min<long>(static_cast<long>(opt_.plateau_theta / dt_), (nt_ - 1) / 2)};
+                     wrap_ ? std::min<long>(ht, (nt_ - 1) / 2) : ht};
   Estimate e;
   e.mean = best.pose;
   // The best may lie on the plateau's edge: centre the box on the mean
@@ -174,7 +187,7 @@ Estimate Localizer::plateau(const Hypothesis& best, const std::vector<Percept>& 
       sc += std::cos(m[2]);
       ss += std::sin(m[2]);
     }
-    const double mt = std::atan2(ss, sc), box_theta = -kPi + c[2] * dt_;
+    const double mt = std::atan2(ss, sc), box_theta = t0_ + c[2] * dt_;
     e.mean = Pose2D(sx / n, sy / n, box_theta + mt);
     e.poses = members.size();
     e.truncated = face;
@@ -187,7 +200,7 @@ Estimate Localizer::plateau(const Hypothesis& best, const std::vector<Percept>& 
     e.covariance[0] += dx_ * dx_ / 12.0;
     e.covariance[4] += dy_ * dy_ / 12.0;
     e.covariance[8] += dt_ * dt_ / 12.0;
-    const long next[3] = {index(e.mean.x, min_x_, dx_), index(e.mean.y, min_y_, dy_), c[2] + std::lround(mt / dt_)};
+    const long next[3] = {index(e.mean.x, min_x_, dx_), index(e.mean.y, min_y_, dy_), c[2] + (dt_ > 0.0 ? std::lround(mt / dt_) : 0L)};
     if (!face || (next[0] == c[0] && next[1] == c[1] && next[2] == c[2])) break;
     std::copy(next, next + 3, c);
   }

@@ -146,6 +146,36 @@ TEST(Search, SymmetricFieldIsAmbiguousUntilAGoalIsNamed) {
   expect_near(named.best.pose, -3, 1.5, 0.4);
 }
 
+// Tracking: a window around a predicted pose picks one of the room's four
+// wall-only modes (see SquareRoomNeedsItsColouredPost): around (-1, 0, 90)
+// +-0.5 m +-20 deg the answer is (-1, 0, 90), unambiguous (no other mode in
+// the window); around (0, -1, 180) with headings 160 ... 200 deg (across
+// +-180) it is (0, -1, 180). Exhaustive evaluation of the window agrees.
+TEST(Search, WindowAroundAPredictedPose) {
+  const FeatureMap map = load("room.yaml");
+  const std::vector<Percept> ps{wall(2, 0), wall(1, kHalfPi), wall(3, -kHalfPi), wall(2, kPi),
+                                wall(2.309401076758503, -kPi / 6), wall(1.1547005383792515, kPi / 3)};
+  SearchOptions opt;
+  opt.region = std::array<double, 4>{-1.5, -0.5, -0.5, 0.5};
+  opt.heading_range = std::array<double, 2>{mrt::common::deg_to_rad(70), mrt::common::deg_to_rad(110)};
+  const Localizer a(map, opt);
+  EXPECT_EQ(a.nx() * a.ny() * a.nt(), 21u * 21u * 41u);
+  const Result ra = a.localize(ps);
+  EXPECT_DOUBLE_EQ(ra.best.evidence, 6.0);
+  EXPECT_FALSE(ra.ambiguous);
+  expect_near(ra.estimate.mean, -1, 0, kHalfPi);
+  EXPECT_DOUBLE_EQ(a.exhaustive(ps).best.evidence, ra.best.evidence);
+
+  opt.region = std::array<double, 4>{-0.5, -1.5, 0.5, -0.5};
+  opt.heading_range = std::array<double, 2>{mrt::common::deg_to_rad(160), mrt::common::deg_to_rad(200)};
+  const Localizer b(map, opt);
+  const Result rb = b.localize(ps);
+  EXPECT_DOUBLE_EQ(rb.best.evidence, 6.0);
+  expect_near(rb.estimate.mean, 0, -1, kPi);
+  EXPECT_LE(std::abs(rb.best.pose.theta), kPi);  // reported normalized
+  EXPECT_DOUBLE_EQ(b.exhaustive(ps).best.evidence, rb.best.evidence);
+}
+
 // Exact: the search's best evidence equals the exhaustive maximum over the
 // lattice (room at 10 cm / 3 degrees: 41 x 41 x 120 poses), noisy percepts.
 TEST(Search, EqualsExhaustiveEvaluation) {
@@ -200,6 +230,9 @@ TEST(Search, RejectsBadOptions) {
   EXPECT_THROW(Localizer(map, opt), std::invalid_argument);
   opt = SearchOptions{};
   opt.accuracy_theta = -1;
+  EXPECT_THROW(Localizer(map, opt), std::invalid_argument);
+  opt = SearchOptions{};
+  opt.heading_range = std::array<double, 2>{0.0, 7.0};  // more than a turn
   EXPECT_THROW(Localizer(map, opt), std::invalid_argument);
   opt = SearchOptions{};
   opt.tolerance[0].base = -0.1;

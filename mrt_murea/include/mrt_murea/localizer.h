@@ -44,6 +44,10 @@ struct SearchOptions {
   double plateau_theta = 0.17453292519943295;  // rad (10 deg)
   /// Region searched [min_x, min_y, max_x, max_y]; empty = the map's bounds.
   std::optional<std::array<double, 4>> region;
+  /// Headings searched [min, max] (rad, both included, max - min < 2 pi,
+  /// max may exceed pi); empty = all headings. With `region`, this bounds
+  /// the search around a predicted pose (tracking).
+  std::optional<std::array<double, 2>> heading_range;
 };
 
 struct Hypothesis {
@@ -105,7 +109,7 @@ class Localizer {
   double bound(const Cell& cell, const std::vector<Percept>& percepts) const;
 
   // The lattice: x_i = min_x + i dx (i < nx), y_j likewise,
-  // theta_k = -pi + k dtheta (k < nt).
+  // theta_k = -pi + k dtheta (k < nt), or min + k dtheta with a heading range.
   std::uint32_t nx() const { return nx_; }
   std::uint32_t ny() const { return ny_; }
   std::uint32_t nt() const { return nt_; }
@@ -133,7 +137,8 @@ class Localizer {
 
   const FeatureMap& map_;
   SearchOptions opt_;
-  double min_x_, min_y_, dx_, dy_, dt_;
+  double min_x_, min_y_, dx_, dy_, dt_, t0_;
+  bool wrap_;  // all headings: theta indices wrap around
   std::uint32_t nx_, ny_, nt_;
 };
 
