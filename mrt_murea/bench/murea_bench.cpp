@@ -2,11 +2,13 @@
 // (field-line points and unnamed goals) on the 18 x 12 m MSL field, over N
 // random poses; then the first M of them by exhaustive evaluation of the
 // lattice (identical best evidence asserted) for the speed-up.
-// Usage: murea_bench [N=1000] [M=3] [world=<package>/test/data/msl_field.yaml]
+// Usage: murea_bench [N=1000] [M=3] [world=<package>/test/data/msl_field.yaml] [tracking_s=300]
+// Then tracking along a figure eight (tracking_run).
 // Two noise levels: "global" (1 cm + 1 %, 0.01 rad, 5 m, 2 spurious
 // points) and "global_sim_noise" (the simulator's 2 %, 0.01 rad, 6 m, 10).
 // Prints `name: value unit` lines.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -16,6 +18,7 @@
 
 #include "mrt_common/angle.h"
 #include "mrt_murea/localizer.h"
+#include "mrt_murea/tracker.h"
 #include "mrt_sim/sensors.h"
 #include "mrt_sim/world.h"
 
@@ -177,6 +180,60 @@ void window_run(const mrt::murea::FeatureMap& map, const std::vector<Frame>& fra
 
 }  // namespace
 
+// Tracking: the robot runs a figure eight over the field (x = 6 sin(wt),
+// y = 3 sin(2wt), w = 0.4 rad/s: up to 3.4 m/s), its heading the direction
+// of travel plus 0.6 sin(1.3 t) (omnidirectional base, turns up to about
+// 2 rad/s); 30 Hz percept frames with the simulator's noise; odometry = the
+// true motion between frames with 3 % translation and 2 % + 0.01 rad/m
+// heading noise; the tracker starts from the true pose (initialpose).
+// Prints RMSE, worst error, update time (median, p95), global re-searches.
+void tracking_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& map, double seconds) {
+  std::mt19937_64 rng(15);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  const double w = 0.4, dt = 1.0 / 30.0;
+  auto truth_at = [&](double t) {
+    const double vx = 6 * w * std::cos(w * t), vy = 6 * w * std::cos(2 * w * t);
+    return mrt::common::Pose2D(6 * std::sin(w * t), 3 * std::sin(2 * w * t), std::atan2(vy, vx) + 0.6 * std::sin(1.3 * t));
+  };
+  mrt::murea::TrackerOptions opt;
+  mrt::murea::Tracker tracker(map, opt);
+  mrt::common::Pose2D prev = truth_at(0.0);
+  tracker.set_pose(prev, {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4});
+  std::vector<double> ms, err;
+  double sum_d2 = 0, sum_t2 = 0, worst = 0, max_speed = 0, max_turn = 0;
+  int globals = 0;
+  const int frames = static_cast<int>(seconds / dt);
+  for (int i = 1; i <= frames; ++i) {
+    const mrt::common::Pose2D truth = truth_at(i * dt);
+    const mrt::common::Pose2D d = prev.inverse() * truth;
+    max_speed = std::max(max_speed, std::hypot(d.x, d.y) / dt);
+    max_turn = std::max(max_turn, std::abs(d.theta) / dt);
+    const double dist = std::hypot(d.x, d.y), st = 0.02 * std::abs(d.theta) + 0.01 * dist;
+    const mrt::common::Pose2D odo(d.x * (1 + 0.03 * n01(rng)), d.y * (1 + 0.03 * n01(rng)), d.theta + st * n01(rng));
+    const double sxy = 0.03 * dist + 1e-4;
+    tracker.predict(odo, {sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st + 1e-8});
+    prev = truth;
+    const std::vector<Percept> ps = simulate(world, truth, Noise{6.0, 0.0, 0.02, 0.01, 10}, rng);
+    const auto t0 = std::chrono::steady_clock::now();
+    const mrt::murea::TrackResult r = tracker.update(ps);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    if (r.mode == mrt::murea::TrackMode::Global) ++globals;
+    const double e = std::hypot(r.pose.x - truth.x, r.pose.y - truth.y), et = angle_diff(r.pose.theta, truth.theta);
+    sum_d2 += e * e;
+    sum_t2 += et * et;
+    worst = std::max(worst, e);
+  }
+  std::cout << "tracking_frames: " << frames << " count\n"
+            << "tracking_max_speed: " << max_speed << " m/s\n"
+            << "tracking_max_turn_rate: " << max_turn << " rad/s\n"
+            << "tracking_rmse_xy: " << 100 * std::sqrt(sum_d2 / frames) << " cm\n"
+            << "tracking_rmse_theta: " << std::sqrt(sum_t2 / frames) * 180 / kPi << " deg\n"
+            << "tracking_worst_xy: " << 100 * worst << " cm\n"
+            << "tracking_update_median: " << percentile(ms, 0.5) << " ms\n"
+            << "tracking_update_p95: " << percentile(ms, 0.95) << " ms\n"
+            << "tracking_global_searches: " << globals << " count\n";
+}
+
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 1000;
   const int m = argc > 2 ? std::atoi(argv[2]) : 3;
@@ -193,6 +250,7 @@ int main(int argc, char** argv) {
   run("global_sim_noise", world, loc, Noise{6.0, 0.0, 0.02, 0.01, 10}, n);
   timeout_table(map, frames);
   window_run(map, frames);
+  tracking_run(world, map, argc > 4 ? std::atof(argv[4]) : 300.0);
 
   double t_search = 0.0, t_exh = 0.0;
   int identical = 0;
