@@ -5,6 +5,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <mrt_msgs/Percept.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <deque>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -44,11 +46,15 @@ struct Recorder {
                         t ? std::abs(mrt::common::angle_diff(p.theta, t->theta)) : -1.0);
   }
   std::string diag;  // the murea status's key=value pairs
+  std::map<std::string, std::string> diag_values;
   void on_diag(const diagnostic_msgs::DiagnosticArray& m) {
     for (const auto& st : m.status) {
       if (st.name.find("murea") == std::string::npos) continue;
       diag = st.message;
-      for (const auto& kv : st.values) diag += "; " + kv.key + "=" + kv.value;
+      for (const auto& kv : st.values) {
+        diag += "; " + kv.key + "=" + kv.value;
+        diag_values[kv.key] = kv.value;
+      }
     }
   }
   // Ground truth nearest in time to `stamp`.
@@ -142,8 +148,34 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   EXPECT_TRUE(trig.response.success) << trig.response.message;
   std::printf("relocalize: %s\n", trig.response.message.c_str());
 
+  // 6. Bad percepts are dropped and counted: two objects in a frame the
+  // node cannot transform, one object with a nan distance.
+  ros::Publisher bad = nh.advertise<mrt_msgs::Percept>("/robot1/percepts", 5);
+  ASSERT_TRUE(mrt::ros_common::wait_for([&] { return bad.getNumSubscribers() > 0; }, 3.0));
+  mrt_msgs::Percept p;
+  p.header.stamp = ros::Time::now();
+  p.header.frame_id = "nowhere";
+  mrt_msgs::PerceptObject o;
+  o.membership_class = "Line";
+  mrt_msgs::Attribute dist, bear;
+  dist.name = "distance";
+  dist.value = 1.0;
+  bear.name = "bearing";
+  o.attributes = {dist, bear};
+  p.objects = {o, o};
+  bad.publish(p);
+  p.header.frame_id = "robot1/base_link";
+  p.objects.resize(1);
+  p.objects[0].attributes[0].value = std::nan("");
+  bad.publish(p);
+  auto count = [&](const char* key) {
+    const auto it = rec.diag_values.find(key);
+    return it == rec.diag_values.end() ? -1 : std::atoi(it->second.c_str());
+  };
+  EXPECT_TRUE(mrt::ros_common::wait_for(
+      [&] { return count("dropped: unknown frame") == 2 && count("dropped: non-finite") == 1; }, 4.0))
+      << rec.diag;
   // Update times the node reports (diagnostics, last 1000 tracked frames).
-  mrt::ros_common::wait_for([&] { return !rec.diag.empty(); }, 2.0);
   std::printf("node diagnostics: %s\n", rec.diag.c_str());
 }
 
