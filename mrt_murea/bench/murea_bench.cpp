@@ -187,7 +187,10 @@ void window_run(const mrt::murea::FeatureMap& map, const std::vector<Frame>& fra
 // true motion between frames with 3 % translation and 2 % + 0.01 rad/m
 // heading noise; the tracker starts from the true pose (initialpose).
 // Prints RMSE, worst error, update time (median, p95), global re-searches.
-void tracking_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& map, double seconds) {
+// `outliers`: that fraction of each frame's percepts replaced by the same
+// class at a random distance (0.5 to 6 m) and bearing.
+void tracking_run(const std::string& name, const mrt::sim::World& world, const mrt::murea::FeatureMap& map,
+                  double seconds, double outliers) {
   std::mt19937_64 rng(15);
   std::normal_distribution<double> n01(0.0, 1.0);
   const double w = 0.4, dt = 1.0 / 30.0;
@@ -213,7 +216,13 @@ void tracking_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& ma
     const double sxy = 0.03 * dist + 1e-4;
     tracker.predict(odo, {sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st + 1e-8});
     prev = truth;
-    const std::vector<Percept> ps = simulate(world, truth, Noise{6.0, 0.0, 0.02, 0.01, 10}, rng);
+    std::vector<Percept> ps = simulate(world, truth, Noise{6.0, 0.0, 0.02, 0.01, 10}, rng);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (Percept& p : ps)
+      if (u01(rng) < outliers) {
+        p.distance = 0.5 + 5.5 * u01(rng);
+        p.bearing = kPi * (2 * u01(rng) - 1);
+      }
     const auto t0 = std::chrono::steady_clock::now();
     const mrt::murea::TrackResult r = tracker.update(ps);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -223,15 +232,66 @@ void tracking_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& ma
     sum_t2 += et * et;
     worst = std::max(worst, e);
   }
-  std::cout << "tracking_frames: " << frames << " count\n"
-            << "tracking_max_speed: " << max_speed << " m/s\n"
-            << "tracking_max_turn_rate: " << max_turn << " rad/s\n"
-            << "tracking_rmse_xy: " << 100 * std::sqrt(sum_d2 / frames) << " cm\n"
-            << "tracking_rmse_theta: " << std::sqrt(sum_t2 / frames) * 180 / kPi << " deg\n"
-            << "tracking_worst_xy: " << 100 * worst << " cm\n"
-            << "tracking_update_median: " << percentile(ms, 0.5) << " ms\n"
-            << "tracking_update_p95: " << percentile(ms, 0.95) << " ms\n"
-            << "tracking_global_searches: " << globals << " count\n";
+  std::cout << name << "_frames: " << frames << " count\n"
+            << name << "_max_speed: " << max_speed << " m/s\n"
+            << name << "_max_turn_rate: " << max_turn << " rad/s\n"
+            << name << "_rmse_xy: " << 100 * std::sqrt(sum_d2 / frames) << " cm\n"
+            << name << "_rmse_theta: " << std::sqrt(sum_t2 / frames) * 180 / kPi << " deg\n"
+            << name << "_worst_xy: " << 100 * worst << " cm\n"
+            << name << "_update_median: " << percentile(ms, 0.5) << " ms\n"
+            << name << "_update_p95: " << percentile(ms, 0.95) << " ms\n"
+            << name << "_global_searches: " << globals << " count\n";
+}
+
+// Kidnapping: 100 trials; tracking at a random pose, the robot is carried
+// to another random pose (no odometry); 30 Hz frames of the simulator's
+// percepts with their colours (named goals, coloured corner posts) and its
+// noise; recovered = the estimate within 0.3 m / 10 deg of the new pose
+// within 30 frames (1 s).
+void kidnap_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& map) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> ux(-8.5, 8.5), uy(-5.5, 5.5), ut(-kPi, kPi);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  mrt::sim::SensorsConfig cfg;
+  cfg.vision_range = 6.0;
+  cfg.line_point_spacing = 0.25;
+  auto frame = [&](const mrt::common::Pose2D& pose) {
+    std::vector<Percept> out;
+    for (const auto& s : mrt::sim::vision_percepts(world, {}, pose, cfg)) {
+      const auto cls = mrt::murea::parse_feature_class(s.membership_class);
+      if (cls) out.push_back({*cls, s.color, s.distance * (1 + 0.02 * n01(rng)), s.bearing + 0.01 * n01(rng), 1.0});
+    }
+    return out;
+  };
+  int recovered = 0, lost = 0, wrong = 0, ambiguous = 0;
+  std::vector<double> frames_needed;
+  for (int trial = 0; trial < 100; ++trial) {
+    mrt::murea::Tracker t(map, mrt::murea::TrackerOptions{});
+    const mrt::common::Pose2D a(ux(rng), uy(rng), ut(rng)), b(ux(rng), uy(rng), ut(rng));
+    t.set_pose(a, {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4});
+    mrt::murea::TrackResult r;
+    for (int i = 0; i < 30; ++i) {
+      r = t.update(frame(b));
+      if (!r.lost && near(r.pose, b)) {
+        ++recovered;
+        frames_needed.push_back(i + 1);
+        break;
+      }
+    }
+    if (r.lost || near(r.pose, b)) {
+      lost += r.lost;
+      // Ambiguous with the new pose among the two modes reported.
+      ambiguous += r.lost && r.search.ambiguous &&
+                   (near(r.search.best.pose, b) || (r.search.alternative && near(r.search.alternative->pose, b)));
+    } else {
+      ++wrong;
+    }
+  }
+  std::cout << "kidnap_recovered_within_1s: " << recovered << " %\n"
+            << "kidnap_still_lost_after_1s: " << lost << " % (" << ambiguous << " % ambiguous, the pose one of the two modes)\n"
+            << "kidnap_tracking_a_wrong_pose_after_1s: " << wrong << " %\n"
+            << "kidnap_frames_median: " << percentile(frames_needed, 0.5) << " frames\n"
+            << "kidnap_frames_p95: " << percentile(frames_needed, 0.95) << " frames\n";
 }
 
 int main(int argc, char** argv) {
@@ -250,7 +310,10 @@ int main(int argc, char** argv) {
   run("global_sim_noise", world, loc, Noise{6.0, 0.0, 0.02, 0.01, 10}, n);
   timeout_table(map, frames);
   window_run(map, frames);
-  tracking_run(world, map, argc > 4 ? std::atof(argv[4]) : 300.0);
+  const double seconds = argc > 4 ? std::atof(argv[4]) : 300.0;
+  tracking_run("tracking", world, map, seconds, 0.0);
+  tracking_run("tracking_outliers30", world, map, seconds, 0.3);
+  kidnap_run(world, map);
 
   double t_search = 0.0, t_exh = 0.0;
   int identical = 0;
