@@ -4,6 +4,7 @@
 // detected and recovered by a global search.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "mrt_common/angle.h"
@@ -92,6 +93,11 @@ TEST(Tracker, FollowsAKnownMotion) {
     // of the range) spread over about +-10 cm, a standard deviation of about
     // 0.1 / sqrt(3) = 6 cm; below 10 cm, above the lattice's 5 / sqrt(12) mm.
     EXPECT_GT(r.covariance[0], 0.05 * 0.05 / 12);
+    // The tied cells (for the evidence markers): all of the plateau, or 500
+    // of it, each within the plateau box (0.3 m) of the estimate.
+    const Estimate& e = r.search.estimate;
+    EXPECT_EQ(e.tied.size(), std::min<std::size_t>(e.poses, Estimate::kMaxTied));
+    for (const Pose2D& q : e.tied) EXPECT_LE(std::hypot(q.x - r.pose.x, q.y - r.pose.y), 0.3 * std::sqrt(2.0) + 0.01);
     EXPECT_LT(r.covariance[0], 0.1 * 0.1);
   }
 }

@@ -59,6 +59,18 @@ visualization_msgs::MarkerArray evidence_markers(const TrackResult& r, const Tra
                    : make(frame, stamp, "runner_up", Marker::ARROW, 1, 0, 0);
   if (!r.search.alternative) alt.action = Marker::DELETE;
   out.markers.push_back(alt);
+  // The surviving cells: the lattice poses tied with the best (the plateau).
+  Marker cells = make(frame, stamp, "tied_cells", Marker::POINTS, 1.0f, 0.5f, 0.0f, 0.9f);
+  cells.scale.x = cells.scale.y = 0.03;
+  for (const Pose2D& q : r.search.estimate.tied) {
+    geometry_msgs::Point p;
+    p.x = q.x;
+    p.y = q.y;
+    p.z = 0.02;
+    cells.points.push_back(p);
+  }
+  if (cells.points.empty()) cells.action = Marker::DELETE;
+  out.markers.push_back(cells);
   // The window the next tracked search will cover.
   Marker w = make(frame, stamp, "search_window", Marker::LINE_STRIP, 1.0f, 1.0f, 0.0f);
   w.scale.x = 0.02;

@@ -1,6 +1,6 @@
-// rviz markers of MUREA's evidence: the estimate with its covariance
-// ellipse, the best lattice pose and the runner-up (ambiguity), and the
-// search window of the next tracked frame.
+// rviz markers of MUREA's evidence: the surviving (tied) cells, the
+// estimate with its covariance ellipse, the best lattice pose, the
+// runner-up (ambiguity) and the search window of the next tracked frame.
 #pragma once
 
 #include <visualization_msgs/MarkerArray.h>
