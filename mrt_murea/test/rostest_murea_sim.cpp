@@ -12,6 +12,7 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
 #include <deque>
@@ -47,6 +48,11 @@ struct Recorder {
   }
   std::string diag;  // the murea status's key=value pairs
   std::map<std::string, std::string> diag_values;
+  std::size_t tied_points = 0;  // points of the last "tied_cells" marker
+  void on_markers(const visualization_msgs::MarkerArray& m) {
+    for (const auto& k : m.markers)
+      if (k.ns == "tied_cells") tied_points = k.points.size();
+  }
   void on_diag(const diagnostic_msgs::DiagnosticArray& m) {
     for (const auto& st : m.status) {
       if (st.name.find("murea") == std::string::npos) continue;
@@ -148,7 +154,26 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   EXPECT_TRUE(trig.response.success) << trig.response.message;
   std::printf("relocalize: %s\n", trig.response.message.c_str());
 
-  // 6. Bad percepts are dropped and counted: two objects in a frame the
+  // 6. initialpose: set 0.15 m and 5 degrees off the truth, the next
+  // tracked poses are back within 0.3 m / 10 deg; the evidence markers
+  // carry the tied cells (the plateau) as points.
+  ros::Publisher init = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("/robot1/initialpose", 1, true);
+  ros::Subscriber sm = nh.subscribe("/robot1/evidence_markers", 5, &Recorder::on_markers, &rec);
+  const auto now_truth = rc::to_pose2d(rec.truth.back().pose.pose);
+  geometry_msgs::PoseWithCovarianceStamped ip;
+  ip.header.frame_id = "map";
+  ip.header.stamp = rec.truth.back().header.stamp;
+  ip.pose.pose = rc::to_pose(Pose2D(now_truth.x + 0.15, now_truth.y, now_truth.theta + 0.087));
+  ip.pose.covariance[0] = ip.pose.covariance[7] = 0.01;
+  ip.pose.covariance[35] = 0.01;
+  init.publish(ip);
+  const std::size_t before_init = rec.poses.size();
+  ASSERT_TRUE(mrt::ros_common::wait_for([&] { return rec.poses.size() > before_init + 5 && rec.tied_points > 0; }, 5.0));
+  EXPECT_GE(rec.errors.back().first, 0.0);
+  EXPECT_LT(rec.errors.back().first, kMaxXy);
+  EXPECT_LT(rec.errors.back().second, kMaxTheta);
+
+  // 7. Bad percepts are dropped and counted: two objects in a frame the
   // node cannot transform, one object with a nan distance.
   ros::Publisher bad = nh.advertise<mrt_msgs::Percept>("/robot1/percepts", 5);
   ASSERT_TRUE(mrt::ros_common::wait_for([&] { return bad.getNumSubscribers() > 0; }, 3.0));
