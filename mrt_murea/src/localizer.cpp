@@ -191,6 +191,10 @@ Estimate Localizer::plateau(const Hypothesis& best, const std::vector<Percept>& 
     e.mean = Pose2D(sx / n, sy / n, box_theta + mt);
     e.poses = members.size();
     e.truncated = face;
+    e.tied.clear();
+    const std::size_t stride = (members.size() + Estimate::kMaxTied - 1) / Estimate::kMaxTied;
+    for (std::size_t i = 0; i < members.size(); i += stride)
+      e.tied.emplace_back(members[i][0], members[i][1], box_theta + members[i][2]);
     e.covariance.fill(0.0);
     for (const auto& m : members) {
       const double d[3] = {m[0] - sx / n, m[1] - sy / n, m[2] - mt};

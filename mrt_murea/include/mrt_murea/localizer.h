@@ -64,6 +64,10 @@ struct Estimate {
   std::array<double, 9> covariance{};
   std::size_t poses = 0;   // lattice poses of the plateau
   bool truncated = false;  // the plateau reaches the box's faces
+  /// The plateau's lattice poses (the cells tied with the best), evenly
+  /// subsampled to at most kMaxTied (for display).
+  std::vector<Pose2D> tied;
+  static constexpr std::size_t kMaxTied = 500;
 };
 
 struct Result {

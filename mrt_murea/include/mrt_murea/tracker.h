@@ -1,0 +1,91 @@
+// MUREA's tracking (ROS-free): odometry predicts the pose between percept
+// frames, the search runs in a window around the prediction sized from the
+// prediction's uncertainty, and a global search takes over when the
+// evidence of the tracked pose collapses (kidnapping).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "mrt_murea/localizer.h"
+
+namespace mrt::murea {
+
+using Covariance3 = std::array<double, 9>;  // row-major x, y, theta
+
+struct TrackerOptions {
+  SearchOptions search;            // global search (and lattice, tolerances) options
+  double window_sigmas = 3.0;      // window half-size = this many standard deviations ...
+  double min_window_xy = 0.15;     // ... clamped to [min, max] (m)
+  double max_window_xy = 1.0;
+  double min_window_theta = 0.08726646259971647;  // rad (5 deg)
+  double max_window_theta = 0.5235987755982988;   // rad (30 deg)
+  /// The tracked pose's evidence is "collapsed" below this fraction of the
+  /// evidence the frame's percepts could give (their total reliability) ...
+  double collapse_fraction = 0.4;
+  /// ... for this many consecutive frames: the next frame is searched globally.
+  int collapse_frames = 3;
+  /// A global result is accepted (tracking starts) when its evidence is at
+  /// least collapse_fraction of the percepts' total and, unless this is
+  /// true, it is not ambiguous; else the next frame is searched globally too.
+  bool track_ambiguous = false;
+};
+
+enum class TrackMode { Global, Tracking };
+
+struct TrackResult {
+  Result search;              // the search of this frame (global or windowed)
+  TrackMode mode = TrackMode::Global;  // how this frame was searched
+  Pose2D pose;                // the estimate after this frame
+  Covariance3 covariance{};   // its covariance
+  double max_evidence = 0.0;  // total reliability of the usable percepts
+  bool collapsed = false;     // this frame's evidence was below the fraction
+  bool lost = false;          // no accepted pose after this frame (pose is the last one)
+};
+
+class Tracker {
+ public:
+  Tracker(const FeatureMap& map, const TrackerOptions& options);
+
+  /// Applies a relative motion in the robot frame (odometry from the last
+  /// call to the next) with its covariance (in the robot frame of the start).
+  void predict(const Pose2D& delta, const Covariance3& delta_covariance);
+
+  /// Localizes from one frame of percepts: windowed search while tracking,
+  /// global search when lost (at start, after reset(), after a collapse).
+  TrackResult update(const std::vector<Percept>& percepts);
+
+  /// Sets the pose (e.g. initialpose) and starts tracking from it.
+  void set_pose(const Pose2D& pose, const Covariance3& covariance);
+  /// Forgets the pose: the next update searches globally.
+  void reset();
+
+  bool tracking() const { return tracking_; }
+  const Pose2D& pose() const { return pose_; }
+  const Covariance3& covariance() const { return cov_; }
+  const TrackerOptions& options() const { return opt_; }
+  /// The window the next tracked search will use: [min_x, min_y, max_x, max_y].
+  std::array<double, 4> window() const;
+  std::array<double, 2> heading_window() const;
+
+ private:
+  TrackResult global_update(const std::vector<Percept>& percepts, double max_evidence);
+
+  const FeatureMap& map_;
+  TrackerOptions opt_;
+  bool tracking_ = false;
+  int collapsed_frames_ = 0;
+  Pose2D pose_;
+  Covariance3 cov_{};
+};
+
+/// Total reliability of the percepts the localizer would use.
+double max_evidence(const Localizer& loc, const std::vector<Percept>& percepts);
+
+/// Covariance of pose * delta from the covariances of pose (world frame) and
+/// delta (frame of pose): J1 P J1^T + J2 Q J2^T.
+Covariance3 compose_covariance(const Pose2D& pose, const Covariance3& p, const Pose2D& delta,
+                               const Covariance3& q);
+
+}  // namespace mrt::murea

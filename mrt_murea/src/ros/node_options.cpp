@@ -1,0 +1,104 @@
+#include "node_options.h"
+
+#include <cctype>
+#include <cmath>
+
+#include "mrt_common_ros/params.h"
+
+namespace mrt::murea::node {
+
+using mrt::ros_common::ParamReader;
+
+namespace {
+
+void read_tolerance(ParamReader& p, const std::string& name, Tolerance& t) {
+  std::vector<double> v{t.base, t.per_metre};
+  p.get(name, v);
+  ParamReader::check(v.size() == 2 && std::isfinite(v[0]) && std::isfinite(v[1]) && v[0] >= 0 && v[1] >= 0, name,
+                     "[base_m, per_metre], two finite numbers >= 0");
+  t = {v[0], v[1]};
+}
+
+}  // namespace
+
+NodeOptions read_options(const ros::NodeHandle& pnh) {
+  NodeOptions o;
+  ParamReader p(pnh);
+  SearchOptions& s = o.tracker.search;
+  TrackerOptions& t = o.tracker;
+  p.require("map", o.map_file, "the path of the map (an mrt_sim world YAML file)");
+  p.get_positive("accuracy_xy", s.accuracy_xy).get_positive("accuracy_theta", s.accuracy_theta);
+  ParamReader::check(s.accuracy_theta <= 1.0, "accuracy_theta", "a number of radians in (0, 1]");
+  s.timeout = 0.05;
+  p.get_non_negative("timeout", s.timeout);
+  for (int c = 0; c < kFeatureClassCount; ++c) {
+    std::string name = std::string("tolerance_") + to_string(static_cast<FeatureClass>(c));
+    for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    read_tolerance(p, name, s.tolerance[c]);
+  }
+  p.get_positive("window_sigmas", t.window_sigmas)
+      .get_positive("min_window_xy", t.min_window_xy)
+      .get_positive("max_window_xy", t.max_window_xy)
+      .get_positive("min_window_theta", t.min_window_theta)
+      .get_positive("max_window_theta", t.max_window_theta)
+      .get_non_negative("collapse_fraction", t.collapse_fraction)
+      .get_positive("collapse_frames", t.collapse_frames);
+  ParamReader::check(t.max_window_xy >= t.min_window_xy, "max_window_xy", "a number >= ~min_window_xy");
+  ParamReader::check(t.max_window_theta >= t.min_window_theta && t.max_window_theta < 3.0, "max_window_theta",
+                     "a number >= ~min_window_theta and < 3 rad");
+  ParamReader::check(t.collapse_fraction <= 1.0, "collapse_fraction", "a number in [0, 1]");
+  p.get("frame_prefix", o.frame_prefix).get("map_frame", o.map_frame).get("odom_frame", o.odom_frame);
+  p.get("base_frame", o.base_frame).get("odom_topic", o.odom_topic).get("publish_tf", o.publish_tf);
+  ParamReader::check(!o.map_frame.empty(), "map_frame", "a non-empty frame id");
+  ParamReader::check(!o.odom_frame.empty(), "odom_frame", "a non-empty frame id");
+  ParamReader::check(!o.base_frame.empty(), "base_frame", "a non-empty frame id");
+  p.get_non_negative("odom_alpha_xy", o.odom_alpha_xy)
+      .get_non_negative("odom_alpha_theta", o.odom_alpha_theta)
+      .get_non_negative("odom_alpha_theta_xy", o.odom_alpha_theta_xy)
+      .get_non_negative("transform_tolerance", o.transform_tolerance)
+      .get_positive("tf_rate", o.tf_rate);
+  return o;
+}
+
+std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops) {
+  std::vector<Percept> out;
+  for (const mrt_msgs::PerceptObject& obj : msg.objects) {
+    const auto cls = parse_feature_class(obj.membership_class);
+    if (!cls) {
+      ++drops.non_map_class;
+      continue;
+    }
+    Percept p;
+    p.cls = *cls;
+    double distance = NAN, bearing = NAN;
+    double reliability = 1.0;
+    for (const mrt_msgs::Attribute& a : obj.attributes) {
+      if (a.name == "distance") {
+        distance = a.value;
+        if (a.reliability > 0.0) reliability = std::min(reliability, static_cast<double>(a.reliability));
+      } else if (a.name == "bearing") {
+        bearing = a.value;
+      } else if (a.name == "color") {
+        p.color = a.symbol;
+      }
+    }
+    if (!std::isfinite(distance) || !std::isfinite(bearing) || distance < 0.0 || !std::isfinite(reliability)) {
+      ++drops.non_finite;
+      continue;
+    }
+    p.distance = distance;
+    p.bearing = bearing;
+    p.reliability = std::clamp(reliability, 1e-6, 1.0);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+Covariance3 odometry_covariance(const Pose2D& d, const NodeOptions& o) {
+  const double dist = std::hypot(d.x, d.y), turn = std::abs(d.theta);
+  const double sxy = o.odom_alpha_xy * dist;
+  const double st = o.odom_alpha_theta * turn + o.odom_alpha_theta_xy * dist;
+  return {sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st};
+}
+
+}  // namespace mrt::murea::node

@@ -1,0 +1,46 @@
+// murea_node's parameters and message conversions (the node's boundary).
+#pragma once
+
+#include <mrt_msgs/Percept.h>
+#include <ros/node_handle.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "mrt_murea/tracker.h"
+
+namespace mrt::murea::node {
+
+struct NodeOptions {
+  std::string map_file;             // ~map: mrt_sim world file (required)
+  TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse
+  std::string frame_prefix;         // ~frame_prefix, e.g. "robot1/"
+  std::string map_frame = "map";    // ~map_frame (global: not prefixed)
+  std::string odom_frame = "odom";  // ~odom_frame (prefixed)
+  std::string base_frame = "base_link";  // ~base_frame (prefixed)
+  std::string odom_topic;           // ~odom_topic: nav_msgs/Odometry topic; empty = tf odom -> base_link
+  double odom_alpha_xy = 0.2;       // ~odom_alpha_xy: translation sd per metre travelled
+  double odom_alpha_theta = 0.2;    // ~odom_alpha_theta: heading sd per radian turned
+  double odom_alpha_theta_xy = 0.05;  // ~odom_alpha_theta_xy: heading sd per metre travelled (rad/m)
+  double transform_tolerance = 0.1;   // ~transform_tolerance: s the map -> odom tf is post-dated
+  bool publish_tf = true;           // ~publish_tf
+  double tf_rate = 20.0;            // ~tf_rate: Hz of map -> odom republication
+};
+
+/// Reads and validates the private parameters (ParamError naming the parameter).
+NodeOptions read_options(const ros::NodeHandle& pnh);
+
+/// Counts of a percept message's objects that were not used.
+struct DropCounts {
+  std::size_t non_map_class = 0;  // Ball, Robot, ...: not a map feature (ignored, not an error)
+  std::size_t non_finite = 0;     // nan/inf or missing distance/bearing, negative distance
+};
+
+/// The map percepts of a message, expressed in the frame of the message.
+std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops);
+
+/// Odometry covariance of a relative motion (amcl-like alphas).
+Covariance3 odometry_covariance(const Pose2D& delta, const NodeOptions& o);
+
+}  // namespace mrt::murea::node

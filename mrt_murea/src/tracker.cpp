@@ -1,0 +1,153 @@
+#include "mrt_murea/tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace mrt::murea {
+
+namespace {
+
+using M3 = std::array<double, 9>;
+
+M3 mul(const M3& a, const M3& b) {
+  M3 c{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) c[3 * i + j] += a[3 * i + k] * b[3 * k + j];
+  return c;
+}
+
+M3 transpose(const M3& a) {
+  return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]};
+}
+
+// a m a^T
+M3 sandwich(const M3& a, const M3& m) { return mul(mul(a, m), transpose(a)); }
+
+bool finite_pose(const Pose2D& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta); }
+
+}  // namespace
+
+Covariance3 compose_covariance(const Pose2D& pose, const Covariance3& p, const Pose2D& delta,
+                               const Covariance3& q) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  // d(pose * delta)/d(pose) and d(pose * delta)/d(delta).
+  const M3 j1{1, 0, -s * delta.x - c * delta.y, 0, 1, c * delta.x - s * delta.y, 0, 0, 1};
+  const M3 j2{c, -s, 0, s, c, 0, 0, 0, 1};
+  const M3 a = sandwich(j1, p), b = sandwich(j2, q);
+  M3 out;
+  for (int i = 0; i < 9; ++i) out[i] = a[i] + b[i];
+  return out;
+}
+
+double max_evidence(const Localizer& loc, const std::vector<Percept>& percepts) {
+  double total = 0.0;
+  for (const Localizer::Prepared& p : loc.prepare(percepts)) total += p.w;
+  return total;
+}
+
+Tracker::Tracker(const FeatureMap& map, const TrackerOptions& o) : map_(map), opt_(o) {
+  if (!(o.window_sigmas > 0.0) || !(o.min_window_xy > 0.0) || !(o.max_window_xy >= o.min_window_xy) ||
+      !(o.min_window_theta > 0.0) || !(o.max_window_theta >= o.min_window_theta) || !(o.max_window_theta < 3.0))
+    throw std::invalid_argument("Tracker: expected 0 < min_window <= max_window (theta < 3 rad), window_sigmas > 0");
+  if (!(o.collapse_fraction >= 0.0 && o.collapse_fraction <= 1.0) || o.collapse_frames < 1)
+    throw std::invalid_argument("Tracker: expected collapse_fraction in [0, 1] and collapse_frames >= 1");
+  Localizer check(map_, opt_.search);  // validates the search options once
+}
+
+void Tracker::predict(const Pose2D& delta, const Covariance3& q) {
+  if (!finite_pose(delta)) return;
+  cov_ = compose_covariance(pose_, cov_, delta, q);
+  pose_ = pose_ * delta;
+}
+
+void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
+  pose_ = pose;
+  cov_ = covariance;
+  tracking_ = true;
+  collapsed_frames_ = 0;
+}
+
+void Tracker::reset() {
+  tracking_ = false;
+  collapsed_frames_ = 0;
+}
+
+std::array<double, 4> Tracker::window() const {
+  const double sd = std::sqrt(std::max({cov_[0], cov_[4], 0.0}));
+  const double h = std::clamp(opt_.window_sigmas * sd, opt_.min_window_xy, opt_.max_window_xy);
+  return {pose_.x - h, pose_.y - h, pose_.x + h, pose_.y + h};
+}
+
+std::array<double, 2> Tracker::heading_window() const {
+  const double sd = std::sqrt(std::max(cov_[8], 0.0));
+  const double h = std::clamp(opt_.window_sigmas * sd, opt_.min_window_theta, opt_.max_window_theta);
+  return {pose_.theta - h, pose_.theta + h};
+}
+
+TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double total) {
+  TrackResult out;
+  out.mode = TrackMode::Global;
+  out.max_evidence = total;
+  const Localizer loc(map_, opt_.search);
+  out.search = loc.localize(percepts);
+  const Result& r = out.search;
+  out.collapsed = r.best.evidence < opt_.collapse_fraction * total || total <= 0.0;
+  if (out.collapsed || (r.ambiguous && !opt_.track_ambiguous)) {
+    // Nothing trustworthy, or two modes: stay lost, keep the last pose.
+    out.lost = true;
+    out.pose = pose_;
+    out.covariance = cov_;
+    return out;
+  }
+  pose_ = r.complete ? r.estimate.mean : r.best.pose;
+  if (r.complete) {
+    cov_ = r.estimate.covariance;
+  } else {  // anytime result: as uncertain as the largest window
+    cov_ = {};
+    cov_[0] = cov_[4] = std::pow(opt_.max_window_xy / opt_.window_sigmas, 2);
+    cov_[8] = std::pow(opt_.max_window_theta / opt_.window_sigmas, 2);
+  }
+  tracking_ = true;
+  collapsed_frames_ = 0;
+  out.pose = pose_;
+  out.covariance = cov_;
+  return out;
+}
+
+TrackResult Tracker::update(const std::vector<Percept>& percepts) {
+  const double total = max_evidence(Localizer(map_, opt_.search), percepts);
+  if (!tracking_) return global_update(percepts, total);
+  SearchOptions so = opt_.search;
+  so.region = window();
+  so.heading_range = heading_window();
+  const Localizer loc(map_, so);
+  TrackResult out;
+  out.mode = TrackMode::Tracking;
+  out.max_evidence = total;
+  out.search = loc.localize(percepts);
+  const Result& r = out.search;
+  out.collapsed = total > 0.0 && r.best.evidence < opt_.collapse_fraction * total;
+  if (total <= 0.0) {
+    // No usable percepts: odometry only.
+  } else if (out.collapsed) {
+    if (++collapsed_frames_ >= opt_.collapse_frames) tracking_ = false;  // kidnapped: global next
+  } else {
+    collapsed_frames_ = 0;
+    pose_ = r.complete ? r.estimate.mean : r.best.pose;
+    if (r.complete) {
+      cov_ = r.estimate.covariance;
+    } else {  // anytime result: keep the prediction's uncertainty
+      const auto w = window();
+      cov_[0] = std::max(cov_[0], std::pow((w[2] - w[0]) / 2 / opt_.window_sigmas, 2));
+      cov_[4] = std::max(cov_[4], cov_[0]);
+    }
+  }
+  out.lost = !tracking_;
+  out.pose = pose_;
+  out.covariance = cov_;
+  return out;
+}
+
+}  // namespace mrt::murea

@@ -1,0 +1,217 @@
+// Tracking with odometry on hand-made cases: the covariance propagation by
+// hand, the tracked pose following a known motion on the MSL field, an
+// odometry bias corrected, standing still, and a teleport (kidnapping)
+// detected and recovered by a global search.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "mrt_common/angle.h"
+#include "mrt_murea/tracker.h"
+#include "mrt_sim/sensors.h"
+
+using namespace mrt::murea;
+using mrt::common::angle_diff;
+using mrt::common::deg_to_rad;
+using mrt::common::kPi;
+
+namespace {
+
+// The simulator's (noise-free) vision percepts at a pose, with colours:
+// field-line points, the named goals and posts, the coloured corner posts.
+std::vector<Percept> percepts_at(const mrt::sim::World& w, const Pose2D& pose) {
+  std::vector<Percept> ps;
+  for (const auto& s : mrt::sim::vision_percepts(w, {}, pose, mrt::sim::SensorsConfig{})) {
+    const auto cls = parse_feature_class(s.membership_class);
+    if (cls) ps.push_back({*cls, s.color, s.distance, s.bearing, 1.0});
+  }
+  return ps;
+}
+
+mrt::sim::World field() {
+  mrt::sim::World w = mrt::sim::load_world(MRT_MUREA_DATA "/msl_field.yaml");
+  w.movers.clear();
+  return w;
+}
+
+// Within the plateau of most evidence: 0.1 m and 3 degrees (the default
+// line tolerance is 5 cm + 3 % of the range; many line points pin the pose
+// much tighter, the bound is loose on purpose).
+void expect_near(const Pose2D& got, const Pose2D& want) {
+  EXPECT_NEAR(got.x, want.x, 0.1);
+  EXPECT_NEAR(got.y, want.y, 0.1);
+  EXPECT_NEAR(angle_diff(got.theta, want.theta), 0.0, deg_to_rad(3));
+}
+
+Covariance3 diag(double xx, double yy, double tt) { return {xx, 0, 0, 0, yy, 0, 0, 0, tt}; }
+
+}  // namespace
+
+// From (0, 0, 0) with no uncertainty, a motion (1, 0, 0) of covariance Q
+// gives Q (J2 = identity). From (0, 0, pi/2) with heading variance s2 only,
+// moving 1 m forward: J1 = [[1, 0, -1], [0, 1, 0], [0, 0, 1]], so
+// xx = s2, x-theta = -s2, theta = s2, y untouched.
+TEST(Tracker, CovariancePropagationByHand) {
+  const Covariance3 q = diag(0.01, 0.02, 0.03);
+  const Covariance3 a = compose_covariance(Pose2D(0, 0, 0), Covariance3{}, Pose2D(1, 0, 0), q);
+  for (int i = 0; i < 9; ++i) EXPECT_DOUBLE_EQ(a[i], q[i]) << i;
+  const Covariance3 b = compose_covariance(Pose2D(0, 0, kPi / 2), diag(0, 0, 0.04), Pose2D(1, 0, 0), Covariance3{});
+  EXPECT_NEAR(b[0], 0.04, 1e-12);
+  EXPECT_NEAR(b[2], -0.04, 1e-12);
+  EXPECT_NEAR(b[6], -0.04, 1e-12);
+  EXPECT_NEAR(b[4], 0.0, 1e-12);
+  EXPECT_NEAR(b[8], 0.04, 1e-12);
+}
+
+// The robot starts at (-5, 1, 2.8) facing the blue goal 4.1 m away (no
+// prior: a global search, unambiguous thanks to the goal's colour), then moves
+// ten times by (0.3 m, 0.05 m, 0.1 rad) in its own frame; odometry reports
+// exactly that motion with 2 cm / 1 degree standard deviation. Every frame
+// is tracked (windowed search) and stays on the true pose; the window
+// search evaluates fewer cells than the global one.
+TEST(Tracker, FollowsAKnownMotion) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  Pose2D truth(-5, 1, 2.8);
+  const TrackResult g = t.update(percepts_at(w, truth));
+  EXPECT_EQ(g.mode, TrackMode::Global);
+  EXPECT_FALSE(g.search.ambiguous);  // the named goals break the symmetry
+  expect_near(g.pose, truth);
+  ASSERT_TRUE(t.tracking());
+  const Pose2D step(0.3, 0.05, 0.1);
+  for (int i = 0; i < 10; ++i) {
+    truth = truth * step;
+    t.predict(step, diag(0.0004, 0.0004, deg_to_rad(1) * deg_to_rad(1)));
+    const TrackResult r = t.update(percepts_at(w, truth));
+    EXPECT_EQ(r.mode, TrackMode::Tracking) << i;
+    EXPECT_FALSE(r.collapsed) << i;
+    expect_near(r.pose, truth);
+    EXPECT_LT(r.search.cells, g.search.cells) << i;
+    // The plateau's covariance: poses within the tolerances (5 cm + 3 %
+    // of the range) spread over about +-10 cm, a standard deviation of about
+    // 0.1 / sqrt(3) = 6 cm; below 10 cm, above the lattice's 5 / sqrt(12) mm.
+    EXPECT_GT(r.covariance[0], 0.05 * 0.05 / 12);
+    // The tied cells (for the evidence markers): all of the plateau, or 500
+    // of it, each within the plateau box (0.3 m) of the estimate.
+    const Estimate& e = r.search.estimate;
+    EXPECT_EQ(e.tied.size(), std::min<std::size_t>(e.poses, Estimate::kMaxTied));
+    for (const Pose2D& q : e.tied) EXPECT_LE(std::hypot(q.x - r.pose.x, q.y - r.pose.y), 0.3 * std::sqrt(2.0) + 0.01);
+    EXPECT_LT(r.covariance[0], 0.1 * 0.1);
+  }
+}
+
+// Odometry biased by 8 cm forward and 2 degrees per step (a slipping
+// wheel): the prediction drifts 0.24 m and 6 degrees in three steps without
+// percepts; the window (3 sigma of the propagated covariance, at least
+// 0.15 m) still holds the truth and the tracked pose is pulled back onto it.
+TEST(Tracker, CorrectsAnOdometryBias) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  Pose2D truth(1, 2, -1);
+  t.set_pose(truth, diag(1e-4, 1e-4, 1e-4));
+  const Pose2D step(0.2, 0, 0), biased(0.28, 0, deg_to_rad(2));
+  for (int i = 0; i < 3; ++i) {
+    truth = truth * step;
+    t.predict(biased, diag(0.05 * 0.05, 0.05 * 0.05, deg_to_rad(2) * deg_to_rad(2)));
+  }
+  EXPECT_GT(std::hypot(t.pose().x - truth.x, t.pose().y - truth.y), 0.2);
+  const TrackResult r = t.update(percepts_at(w, truth));
+  EXPECT_EQ(r.mode, TrackMode::Tracking);
+  expect_near(r.pose, truth);
+}
+
+// Standing still: twenty frames from the same pose, no odometry; every
+// frame updates (tracked search) and the estimate does not move by more
+// than a centimetre (the same percepts give the same plateau).
+TEST(Tracker, UpdatesWhileStandingStill) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  const Pose2D truth(-4, -2, 2.5);
+  const std::vector<Percept> ps = percepts_at(w, truth);
+  const Pose2D first = t.update(ps).pose;
+  expect_near(first, truth);
+  for (int i = 0; i < 20; ++i) {
+    const TrackResult r = t.update(ps);
+    EXPECT_EQ(r.mode, TrackMode::Tracking);
+    EXPECT_NEAR(r.pose.x, first.x, 0.01);
+    EXPECT_NEAR(r.pose.y, first.y, 0.01);
+  }
+}
+
+// Teleport: tracking at (-5, 1, 2.8), the robot is carried to (4, -3, 2)
+// with no odometry. The window around (-2, 0, 0) cannot explain the new
+// percepts (evidence below 40 % of their total): frames 1 to 3 are
+// collapsed tracked frames (collapse_frames = 3), the tracker gives up and
+// frame 4 is searched globally and lands on the new pose.
+TEST(Tracker, TeleportTriggersAGlobalSearch) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  t.update(percepts_at(w, Pose2D(-5, 1, 2.8)));
+  ASSERT_TRUE(t.tracking());
+  const Pose2D moved(4, -3, 2);
+  const std::vector<Percept> ps = percepts_at(w, moved);
+  for (int i = 0; i < 3; ++i) {
+    const TrackResult r = t.update(ps);
+    EXPECT_EQ(r.mode, TrackMode::Tracking) << i;
+    EXPECT_TRUE(r.collapsed) << i;
+    EXPECT_LT(r.search.best.evidence, 0.4 * r.max_evidence) << i;
+  }
+  EXPECT_FALSE(t.tracking());
+  const TrackResult g = t.update(ps);
+  EXPECT_EQ(g.mode, TrackMode::Global);
+  EXPECT_FALSE(g.collapsed);
+  EXPECT_FALSE(g.lost);
+  expect_near(g.pose, moved);
+  EXPECT_TRUE(t.tracking());
+}
+
+// reset() forgets the pose: the next frame is global; set_pose() starts
+// tracking from the given pose; no usable percepts keep the prediction.
+TEST(Tracker, ResetSetPoseAndNoPercepts) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  t.set_pose(Pose2D(0.5, 0.5, 0.3), diag(0.01, 0.01, 0.01));
+  EXPECT_TRUE(t.tracking());
+  const TrackResult none = t.update({});
+  EXPECT_EQ(none.mode, TrackMode::Tracking);
+  EXPECT_DOUBLE_EQ(none.pose.x, 0.5);
+  EXPECT_DOUBLE_EQ(none.max_evidence, 0.0);
+  t.reset();
+  EXPECT_FALSE(t.tracking());
+  EXPECT_EQ(t.update(percepts_at(w, Pose2D(2, 1, 1))).mode, TrackMode::Global);
+  TrackerOptions bad;
+  bad.min_window_xy = 0.0;
+  EXPECT_THROW(Tracker(map, bad), std::invalid_argument);
+  bad = TrackerOptions{};
+  bad.collapse_frames = 0;
+  EXPECT_THROW(Tracker(map, bad), std::invalid_argument);
+}
+
+// Ambiguity: at (-2, 0, 0) with its line points only, the
+// field's half-turn symmetry gives two modes of equal evidence: the global
+// search reports them, the tracker does not pick one (lost) unless
+// track_ambiguous is set.
+TEST(Tracker, AmbiguousGlobalResultIsNotTrackedByDefault) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  std::vector<Percept> lines;
+  for (const Percept& p : percepts_at(w, Pose2D(-2, 0, 0)))
+    if (p.cls == FeatureClass::Line) lines.push_back(p);
+  ASSERT_GT(lines.size(), 20u);
+  Tracker t(map, TrackerOptions{});
+  const TrackResult r = t.update(lines);
+  EXPECT_TRUE(r.search.ambiguous);
+  EXPECT_TRUE(r.lost);
+  EXPECT_FALSE(t.tracking());
+  TrackerOptions o;
+  o.track_ambiguous = true;
+  Tracker t2(map, o);
+  EXPECT_FALSE(t2.update(lines).lost);
+  EXPECT_TRUE(t2.tracking());
+}
