@@ -42,7 +42,7 @@ class GridAstar {
  private:
   PlanResult run(const Cell& start, const Cell& goal, const std::vector<unsigned>* mask, unsigned stamp);
   const OccupancyGrid& grid_;
-  std::vector<float> g_;
+  std::vector<double> g_;
   std::vector<int> parent_;
   std::vector<unsigned> stamp_;
   std::vector<unsigned char> closed_;
