@@ -28,7 +28,7 @@ void print_stats(const std::string& p, const RunStats& s, double pre_ms) {
 }
 
 void bench_map(const std::string& map_file, const std::string& scen_file, const std::vector<int>& given,
-               int every, double radius, int max_leaf) {
+               int every, double radius, int max_leaf, bool refine) {
   const std::string name = fs::path(map_file).stem().string();
   const OccupancyGrid grid = inflate(load_movingai_map(map_file), radius);
   const auto scen = load_scenario(scen_file);
@@ -38,6 +38,7 @@ void bench_map(const std::string& map_file, const std::string& scen_file, const 
   auto t0 = std::chrono::steady_clock::now();
   SpikeOptions opts;
   opts.quadtree.max_leaf_size = max_leaf;
+  opts.refine = refine;
   SpikePlanner spike(grid, opts);
   const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   GridAstar astar(grid);
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   std::string map_file, scen_file, idx_file, dir;
   int every = 10, max_leaf = 64;
   double radius = 0.0;
+  bool refine = true;
   auto* o_map = app.add_option("--map", map_file, "Moving AI .map file");
   app.add_option("--scen", scen_file, ".scen file (default: MAP.scen)");
   app.add_option("--queries", idx_file, "file of query indices, one a line");
@@ -69,6 +71,7 @@ int main(int argc, char** argv) {
   app.add_option("--every", every, "run every N-th query (when no --queries)")->check(CLI::PositiveNumber);
   app.add_option("--radius", radius, "inflation in cells");
   app.add_option("--max-leaf", max_leaf, "largest quadtree leaf side")->check(CLI::PositiveNumber);
+  app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
   CLI11_PARSE(app, argc, argv);
   try {
     const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
@@ -78,14 +81,14 @@ int main(int argc, char** argv) {
         if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
           maps.push_back(e.path().string());
       std::sort(maps.begin(), maps.end());
-      for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf);
+      for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf, refine);
       return 0;
     }
     if (map_file.empty()) {
       std::cerr << "spike_bench: give --map FILE or --dir DIR\n";
       return 2;
     }
-    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf);
+    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf, refine);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "spike_bench: " << e.what() << "\n";

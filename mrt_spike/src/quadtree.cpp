@@ -59,6 +59,63 @@ void Quadtree::build(int x, int y, int size, const std::vector<int>& sat) {
   build(x + h, y + h, h, sat);
 }
 
+bool Quadtree::line_of_sight(const Cell& a, const Cell& b) const {
+  const OccupancyGrid& g = *grid_;
+  int x = a.x, y = a.y;
+  if (g.blocked(x, y) || g.blocked(b.x, b.y)) return false;
+  const long dx = std::abs(b.x - a.x), dy = std::abs(b.y - a.y);
+  const int sx = b.x > a.x ? 1 : -1, sy = b.y > a.y ? 1 : -1;
+  long i = 0, j = 0;  // vertical / horizontal grid lines crossed so far
+  // number of crossings m >= 1 of the other family with (2m-1)*d_other < k
+  auto crossings_before = [](long k, long d_other) { return d_other == 0 ? 0 : ((k - 1) / d_other + 1) / 2; };
+  while (i < dx || j < dy) {
+    const int l = leaf_of_cell_[g.index(x, y)];
+    if (l >= 0 && leaves_[l].size >= 4) {  // jump to the last cell of this leaf on the segment
+      const QuadLeaf& L = leaves_[l];
+      const long ix = sx > 0 ? L.x + L.size - a.x : a.x - L.x + 1;  // crossing that leaves in x
+      const long jy = sy > 0 ? L.y + L.size - a.y : a.y - L.y + 1;
+      const bool out_x = ix <= dx, out_y = jy <= dy;
+      if (!out_x && !out_y) return true;  // the rest of the segment is inside the leaf
+      // compare parameters (2ix-1)/(2dx) and (2jy-1)/(2dy)
+      const long kx = (2 * ix - 1) * dy, ky = (2 * jy - 1) * dx;
+      long ni, nj;
+      if (out_x && (!out_y || kx < ky)) {
+        ni = ix - 1;
+        nj = std::min(dy, crossings_before(kx, dx));
+      } else if (out_y && (!out_x || ky < kx)) {
+        nj = jy - 1;
+        ni = std::min(dx, crossings_before(ky, dy));
+      } else {
+        ni = ix - 1;
+        nj = jy - 1;
+      }
+      if (ni > i || nj > j) {
+        i = std::max(i, ni);
+        j = std::max(j, nj);
+        x = a.x + sx * static_cast<int>(i);
+        y = a.y + sy * static_cast<int>(j);
+      }
+    }
+    if (i >= dx && j >= dy) break;
+    const long tx = (2 * i + 1) * dy, ty = (2 * j + 1) * dx;
+    if (i < dx && (j >= dy || tx < ty)) {
+      x += sx;
+      ++i;
+    } else if (j < dy && (i >= dx || ty < tx)) {
+      y += sy;
+      ++j;
+    } else {
+      if (g.blocked(x + sx, y) && g.blocked(x, y + sy)) return false;
+      x += sx;
+      y += sy;
+      ++i;
+      ++j;
+    }
+    if (g.blocked(x, y)) return false;
+  }
+  return true;
+}
+
 void Quadtree::build_adjacency() {
   // vertices: the distinct corner cells of every leaf
   for (QuadLeaf& L : leaves_) {
@@ -102,7 +159,7 @@ void Quadtree::build_adjacency() {
     nb[v].erase(std::unique(nb[v].begin(), nb[v].end()), nb[v].end());
     for (int w : nb[v]) {
       const Cell a = vertices_[v], b = vertices_[w];
-      if (!line_of_sight(*grid_, a, b)) continue;
+      if (!line_of_sight(a, b)) continue;
       adj_.push_back(w);
       adj_cost_.push_back(static_cast<float>(std::hypot(a.x - b.x, a.y - b.y)));
     }

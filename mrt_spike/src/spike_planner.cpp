@@ -12,18 +12,29 @@ namespace {
 double dist(const Cell& a, const Cell& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 }  // namespace
 
-std::vector<Cell> string_pull(const OccupancyGrid& grid, const std::vector<Cell>& path) {
+namespace {
+template <typename Los>
+std::vector<Cell> pull(const std::vector<Cell>& path, Los los) {
   if (path.size() < 3) return path;
   std::vector<Cell> out{path.front()};
   size_t anchor = 0;
   for (size_t k = 2; k < path.size(); ++k) {
-    if (!line_of_sight(grid, path[anchor], path[k])) {
+    if (!los(path[anchor], path[k])) {
       out.push_back(path[k - 1]);
       anchor = k - 1;
     }
   }
   out.push_back(path.back());
   return out;
+}
+}  // namespace
+
+std::vector<Cell> string_pull(const OccupancyGrid& grid, const std::vector<Cell>& path) {
+  return pull(path, [&](const Cell& a, const Cell& b) { return line_of_sight(grid, a, b); });
+}
+
+std::vector<Cell> string_pull(const Quadtree& tree, const std::vector<Cell>& path) {
+  return pull(path, [&](const Cell& a, const Cell& b) { return tree.line_of_sight(a, b); });
 }
 
 SpikePlanner::SpikePlanner(const OccupancyGrid& grid, SpikeOptions options)
@@ -46,11 +57,11 @@ PlanResult SpikePlanner::plan(const Cell& start, const Cell& goal) {
   if (len < 0.0) {  // not connected in the quadtree graph: ask the grid
     PlanResult f = fallback_->plan(start, goal);
     f.fallback = f.solved;
-    if (f.solved) f.path = string_pull(grid_, f.path);
+    if (f.solved) f.path = string_pull(*tree_, f.path);
     f.length = path_length(f.path);
     return f;
   }
-  r.path = options_.smooth ? string_pull(grid_, path) : path;
+  r.path = options_.smooth ? string_pull(*tree_, path) : path;
   if (options_.refine && r.path.size() > 2) {
     std::vector<Cell> better = refine(r.path);
     if (!better.empty() && path_length(better) < path_length(r.path)) r.path = std::move(better);
@@ -106,14 +117,14 @@ std::vector<Cell> SpikePlanner::refine(const std::vector<Cell>& path) {
   }
   PlanResult r = fallback_->plan_within(path.front(), path.back(), cell_mark_, mark_);
   if (!r.solved) return {};
-  return string_pull(grid_, r.path);
+  return string_pull(*tree_, r.path);
 }
 
 // Lazy Theta*'s SetVertex: when the assumed parent is not in line of sight,
 // take the best closed neighbour instead (edges of the graph are valid).
 int SpikePlanner::set_vertex(int s, int n) {
   const int p = parent_[s];
-  if (p < 0 || line_of_sight(grid_, point_[p], point_[s])) return p;
+  if (p < 0 || tree_->line_of_sight(point_[p], point_[s])) return p;
   double best = std::numeric_limits<double>::infinity();
   int arg = -1;
   auto consider = [&](int q, double c) {
@@ -136,7 +147,7 @@ int SpikePlanner::set_vertex(int s, int n) {
 
 double SpikePlanner::search(const Cell& start, const Cell& goal, std::vector<Cell>& path, int& expansions) {
   path.clear();
-  if (line_of_sight(grid_, start, goal)) {
+  if (tree_->line_of_sight(start, goal)) {
     path = {start, goal};
     if (start == goal) path.pop_back();
     return dist(start, goal);

@@ -74,6 +74,29 @@ TEST(Quadtree, LargeCellsInOpenSpaceFinestNearObstacles) {
   EXPECT_EQ(Quadtree(OccupancyGrid(128, 128)).leaves().size(), 4u);
 }
 
+TEST(Quadtree, FastLineOfSightAgreesWithTheGridWalk) {
+  // The leaf-jumping walk must answer exactly as the cell-by-cell one.
+  OccupancyGrid g(96, 80);
+  for (int k = 0; k < 60; ++k) stamp_disc(g, (k * 37) % 96, (k * 23) % 80, (k % 3) * 1.5, true);
+  const Quadtree t(g);
+  int agree = 0, visible = 0;
+  unsigned long r = 16;
+  auto next = [&r](int n) {
+    r = r * 6364136223846793005UL + 1442695040888963407UL;
+    return static_cast<int>((r >> 33) % static_cast<unsigned long>(n));
+  };
+  for (int k = 0; k < 4000; ++k) {
+    const Cell a{next(96), next(80)}, b{next(96), next(80)};
+    const bool slow = line_of_sight(g, a, b);
+    ASSERT_EQ(t.line_of_sight(a, b), slow) << a.x << "," << a.y << " -> " << b.x << "," << b.y;
+    ++agree;
+    visible += slow ? 1 : 0;
+  }
+  EXPECT_EQ(agree, 4000);
+  EXPECT_GT(visible, 100);   // both answers occur
+  EXPECT_LT(visible, 3900);
+}
+
 TEST(Planner, NarrowPassageOneCellWide) {
   // Wall in column 16 with a single free cell at row 20. Octile: (2,2) to
   // (15,20) is 13 diagonal + 5 straight, then 2 straight through the gap

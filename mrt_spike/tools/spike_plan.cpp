@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   std::string map_file, scen_file, idx_file, out_file, algo = "spike";
   std::vector<int> start, goal;
   double radius = 0.0;
+  bool refine = true;
   int max_leaf = 64;
   app.add_option("--map", map_file, "Moving AI .map file")->required();
   auto* o_start = app.add_option("--start", start, "start X Y")->expected(2);
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   o_start->needs(o_goal);
   o_goal->needs(o_start);
   o_scen->excludes(o_start);
+  app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
   CLI11_PARSE(app, argc, argv);
   if (scen_file.empty() && start.empty()) {
     std::cerr << "spike_plan: give --start X Y --goal X Y or --scen FILE\n";
@@ -49,6 +51,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     SpikeOptions opts;
     opts.quadtree.max_leaf_size = max_leaf;
+  opts.refine = refine;
     std::unique_ptr<SpikePlanner> spike;
     std::unique_ptr<GridAstar> astar;
     if (algo == "spike") spike = std::make_unique<SpikePlanner>(grid, opts);

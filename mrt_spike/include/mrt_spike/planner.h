@@ -90,5 +90,6 @@ class SpikePlanner {
 /// Removes waypoints while the straight segment stays valid (greedy string
 /// pulling from the first waypoint). Never lengthens the path.
 std::vector<Cell> string_pull(const OccupancyGrid& grid, const std::vector<Cell>& path);
+std::vector<Cell> string_pull(const Quadtree& tree, const std::vector<Cell>& path);
 
 }  // namespace mrt::spike

@@ -41,6 +41,9 @@ class Quadtree {
   int neighbour(int k) const { return adj_[k]; }
   float cost(int k) const { return adj_cost_[k]; }
   size_t edge_count() const { return adj_.size(); }
+  /// line_of_sight() on the grid, jumping over the cells of large leaves
+  /// (known free): O(leaves crossed + small cells crossed). Same answer.
+  bool line_of_sight(const Cell& a, const Cell& b) const;
   const OccupancyGrid& grid() const { return *grid_; }
 
  private:
