@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -84,9 +85,15 @@ int main(int argc, char** argv) {
       for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf, refine);
       return 0;
     }
-    if (map_file.empty()) {
-      std::cerr << "spike_bench: give --map FILE or --dir DIR\n";
-      return 2;
+    if (map_file.empty()) {  // no arguments (scripts/bench.sh): the Moving AI set, else the test maps
+      const char* env = std::getenv("MRT_SPIKE_BENCH_DIR");
+      const std::string d = env ? env : fs::exists("../shared/bench/movingai") ? "../shared/bench/movingai"
+                                                                            : MRT_SPIKE_DATA;
+      std::cout << "# maps from " << d << "\n";
+      for (const auto& e : fs::directory_iterator(d))
+        if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
+          bench_map(e.path().string(), e.path().string() + ".scen", idx, every, radius, max_leaf, refine);
+      return 0;
     }
     bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf, refine);
     return 0;
