@@ -29,7 +29,8 @@ void print_stats(const std::string& p, const RunStats& s, double pre_ms) {
 }
 
 void bench_map(const std::string& map_file, const std::string& scen_file, const std::vector<int>& given,
-               int every, double radius, int max_leaf, bool refine) {
+               int every, double radius, int max_leaf, bool refine,
+               const std::string& vertices) {
   const std::string name = fs::path(map_file).stem().string();
   const OccupancyGrid grid = inflate(load_movingai_map(map_file), radius);
   const auto scen = load_scenario(scen_file);
@@ -40,6 +41,7 @@ void bench_map(const std::string& map_file, const std::string& scen_file, const 
   SpikeOptions opts;
   opts.quadtree.max_leaf_size = max_leaf;
   opts.refine = refine;
+  opts.quadtree.centre_only = vertices == "centre";
   SpikePlanner spike(grid, opts);
   const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   GridAstar astar(grid);
@@ -65,6 +67,7 @@ int main(int argc, char** argv) {
   int every = 10, max_leaf = 64;
   double radius = 0.0;
   bool refine = true;
+  std::string vertices = "centre";
   auto* o_map = app.add_option("--map", map_file, "Moving AI .map file");
   app.add_option("--scen", scen_file, ".scen file (default: MAP.scen)");
   app.add_option("--queries", idx_file, "file of query indices, one a line");
@@ -73,6 +76,8 @@ int main(int argc, char** argv) {
   app.add_option("--radius", radius, "inflation in cells");
   app.add_option("--max-leaf", max_leaf, "largest quadtree leaf side")->check(CLI::PositiveNumber);
   app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
+  app.add_option("--vertices", vertices, "SPIKE: one vertex per leaf (centre) or corners + centre")
+      ->check(CLI::IsMember({"centre", "corners"}));
   CLI11_PARSE(app, argc, argv);
   try {
     const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
@@ -82,7 +87,7 @@ int main(int argc, char** argv) {
         if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
           maps.push_back(e.path().string());
       std::sort(maps.begin(), maps.end());
-      for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf, refine);
+      for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf, refine, vertices);
       return 0;
     }
     if (map_file.empty()) {  // no arguments (scripts/bench.sh): the Moving AI set, else the test maps
@@ -92,10 +97,10 @@ int main(int argc, char** argv) {
       std::cout << "# maps from " << d << "\n";
       for (const auto& e : fs::directory_iterator(d))
         if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
-          bench_map(e.path().string(), e.path().string() + ".scen", idx, every, radius, max_leaf, refine);
+          bench_map(e.path().string(), e.path().string() + ".scen", idx, every, radius, max_leaf, refine, vertices);
       return 0;
     }
-    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf, refine);
+    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf, refine, vertices);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "spike_bench: " << e.what() << "\n";

@@ -122,6 +122,11 @@ void Quadtree::build_adjacency() {
     const int s = L.size - 1;
     const Cell c[5] = {{L.x, L.y}, {L.x + s, L.y}, {L.x, L.y + s}, {L.x + s, L.y + s},
                        {L.x + s / 2, L.y + s / 2}};
+    if (options_.centre_only) {
+      L.corners[0] = static_cast<int>(vertices_.size());
+      vertices_.push_back(c[4]);
+      continue;
+    }
     for (int k = 0; k < 5; ++k) {
       if (k > 0 && s == 0) break;
       if (k == 4 && s < 2) break;
@@ -135,7 +140,22 @@ void Quadtree::build_adjacency() {
     nb[a].push_back(b);
     nb[b].push_back(a);
   };
-  for (size_t i = 0; i < leaves_.size(); ++i) {
+  for (size_t i = 0; i < leaves_.size() && options_.centre_only; ++i) {
+    const QuadLeaf& L = leaves_[i];
+    auto probe = [&](int cx, int cy) {
+      const int j = leaf_at(cx, cy);
+      if (j > static_cast<int>(i)) link(L.corners[0], leaves_[j].corners[0]);
+    };
+    for (int cx = L.x - 1; cx <= L.x + L.size; ++cx) {
+      probe(cx, L.y - 1);
+      probe(cx, L.y + L.size);
+    }
+    for (int cy = L.y; cy < L.y + L.size; ++cy) {
+      probe(L.x - 1, cy);
+      probe(L.x + L.size, cy);
+    }
+  }
+  for (size_t i = 0; i < leaves_.size() && !options_.centre_only; ++i) {
     const QuadLeaf& L = leaves_[i];
     for (int a = 0; a < 5; ++a)
       for (int b = a + 1; b < 5; ++b)

@@ -108,15 +108,20 @@ TEST(Planner, NarrowPassageOneCellWide) {
   ASSERT_TRUE(a.solved);
   EXPECT_NEAR(a.length, 25 * kS2 + 13, 1e-9);
   EXPECT_TRUE(path_valid(g, a.path, {2, 2}, {29, 2}));
-  SpikePlanner spike(g);
-  const PlanResult s = spike.plan({2, 2}, {29, 2});
-  ASSERT_TRUE(s.solved);
-  EXPECT_TRUE(path_valid(g, s.path, {2, 2}, {29, 2}));
-  EXPECT_FALSE(s.fallback);
-  // Any path reaches column 16 inside the gap x in [15.5,16.5], y in
-  // [19.5,20.5]: at least 2 * hypot(13.5, 17.5) = 44.21; at most octile.
-  EXPECT_GE(s.length, 2 * std::hypot(13.5, 17.5));
-  EXPECT_LE(s.length, 25 * kS2 + 13 + 1e-9);
+  for (int mode = 0; mode < 4; ++mode) {
+    SpikeOptions opts;
+    opts.quadtree.centre_only = mode % 2 == 0;
+    opts.refine = mode >= 2;  // without refinement the quadtree search alone finds the gap
+    SpikePlanner spike(g, opts);
+    const PlanResult s = spike.plan({2, 2}, {29, 2});
+    ASSERT_TRUE(s.solved);
+    EXPECT_TRUE(path_valid(g, s.path, {2, 2}, {29, 2}));
+    EXPECT_FALSE(s.fallback);
+    // Any path reaches column 16 inside the gap x in [15.5,16.5], y in
+    // [19.5,20.5]: at least 2 * hypot(13.5, 17.5) = 44.21; at most octile.
+    EXPECT_GE(s.length, 2 * std::hypot(13.5, 17.5));
+    if (opts.refine) EXPECT_LE(s.length, 25 * kS2 + 13 + 1e-9);
+  }
 }
 
 TEST(Planner, OpenSpaceStraightLine) {
@@ -182,11 +187,15 @@ TEST(Planner, StringPullNeverLengthens) {
   EXPECT_EQ(pulled, (std::vector<Cell>{{0, 0}, {4, 0}}));  // 4 < 4*sqrt(2)
 }
 
-TEST(Planner, SpikeMatchesOctileOnRandomMap) {
+class SpikeVertices : public ::testing::TestWithParam<bool> {};
+
+TEST_P(SpikeVertices, MatchesOctileOnRandomMap) {
   // 64x64, 30 % random obstacles (seed 16): every query both planners solve,
   // SPIKE's path valid and at most 1.01 x the octile A* length.
   const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
-  SpikePlanner spike(g);
+  SpikeOptions opts;
+  opts.quadtree.centre_only = GetParam();
+  SpikePlanner spike(g, opts);
   GridAstar astar(g);
   int solved = 0, pairs = 0;
   for (int k = 0; k < 200; ++k) {
@@ -203,6 +212,8 @@ TEST(Planner, SpikeMatchesOctileOnRandomMap) {
   EXPECT_GT(pairs, 50);
   EXPECT_GT(solved, 40);
 }
+
+INSTANTIATE_TEST_SUITE_P(CentreAndCorners, SpikeVertices, ::testing::Values(true, false));
 
 TEST(ScenarioRun, OutputFormat) {
   const OccupancyGrid g = load_movingai_map(kData + "/passage32.map");

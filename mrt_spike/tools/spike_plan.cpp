@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   std::vector<int> start, goal;
   double radius = 0.0;
   bool refine = true;
+  std::string vertices = "centre";
   int max_leaf = 64;
   app.add_option("--map", map_file, "Moving AI .map file")->required();
   auto* o_start = app.add_option("--start", start, "start X Y")->expected(2);
@@ -34,6 +36,8 @@ int main(int argc, char** argv) {
   o_goal->needs(o_start);
   o_scen->excludes(o_start);
   app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
+  app.add_option("--vertices", vertices, "SPIKE: one vertex per leaf (centre) or corners + centre")
+      ->check(CLI::IsMember({"centre", "corners"}));
   CLI11_PARSE(app, argc, argv);
   if (scen_file.empty() && start.empty()) {
     std::cerr << "spike_plan: give --start X Y --goal X Y or --scen FILE\n";
@@ -52,6 +56,7 @@ int main(int argc, char** argv) {
     SpikeOptions opts;
     opts.quadtree.max_leaf_size = max_leaf;
   opts.refine = refine;
+  opts.quadtree.centre_only = vertices == "centre";
     std::unique_ptr<SpikePlanner> spike;
     std::unique_ptr<GridAstar> astar;
     if (algo == "spike") spike = std::make_unique<SpikePlanner>(grid, opts);

@@ -19,6 +19,7 @@ struct QuadLeaf {
 
 struct QuadtreeOptions {
   int max_leaf_size = 64;  ///< cap on a leaf's side (bounds the detour through a leaf's centre)
+  bool centre_only = true;  ///< one vertex per leaf (its centre cell); false: corners + centre
 };
 
 class Quadtree {
