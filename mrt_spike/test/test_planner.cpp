@@ -120,7 +120,9 @@ TEST(Planner, NarrowPassageOneCellWide) {
     // Any path reaches column 16 inside the gap x in [15.5,16.5], y in
     // [19.5,20.5]: at least 2 * hypot(13.5, 17.5) = 44.21; at most octile.
     EXPECT_GE(s.length, 2 * std::hypot(13.5, 17.5));
-    if (opts.refine) EXPECT_LE(s.length, 25 * kS2 + 13 + 1e-9);
+    if (opts.refine) {
+      EXPECT_LE(s.length, 25 * kS2 + 13 + 1e-9);
+    }
   }
 }
 
