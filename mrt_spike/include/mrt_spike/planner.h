@@ -1,0 +1,95 @@
+// Planners over an occupancy grid: SPIKE (any-angle search over the
+// quadtree) and the baseline octile A*.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mrt_spike/grid.h"
+#include "mrt_spike/quadtree.h"
+
+namespace mrt::spike {
+
+struct PlanResult {
+  bool solved = false;
+  std::vector<Cell> path;  ///< waypoints (cell centres), start first, goal last
+  double length = 0.0;
+  std::string reason;      ///< why not solved
+  Cell nearest;            ///< when not solved: the reachable cell nearest the goal
+                           ///< (or nearest the start when the start is blocked)
+  int expansions = 0;
+  bool fallback = false;   ///< SPIKE only: solved by the grid search after the quadtree failed
+};
+
+/// Why there is no path, and the nearest reachable point, in O(cells):
+/// a blocked start gives the free cell nearest it; a blocked goal or an
+/// unreachable one gives the cell reachable from the start nearest the goal.
+/// Returns an empty reason when the goal is reachable.
+PlanResult diagnose(const OccupancyGrid& grid, const Cell& start, const Cell& goal);
+
+/// Plain octile A* on the grid: 8-connected, cost 1 and sqrt(2), no corner
+/// cutting (a diagonal move needs both adjacent straight cells free), binary
+/// heap, octile heuristic. The baseline.
+class GridAstar {
+ public:
+  explicit GridAstar(const OccupancyGrid& grid);
+  PlanResult plan(const Cell& start, const Cell& goal);
+  /// The same search restricted to the cells c with mask[index(c)] == stamp.
+  PlanResult plan_within(const Cell& start, const Cell& goal, const std::vector<unsigned>& mask,
+                         unsigned stamp);
+
+ private:
+  PlanResult run(const Cell& start, const Cell& goal, const std::vector<unsigned>* mask, unsigned stamp);
+  const OccupancyGrid& grid_;
+  std::vector<double> g_;
+  std::vector<int> parent_;
+  std::vector<unsigned> stamp_;
+  std::vector<unsigned char> closed_;
+  unsigned run_ = 0;
+};
+
+struct SpikeOptions {
+  QuadtreeOptions quadtree;
+  bool smooth = true;  ///< final string pulling
+  bool refine = true;  ///< octile A* + string pulling in the corridor of leaves around the path
+};
+
+/// SPIKE: Lazy Theta* over the quadtree leaves (vertices: the leaves'
+/// representative cells; parents may be any earlier vertex in line of sight
+/// on the fine grid), then string pulling. The quadtree is built once
+/// (preprocessing); queries reuse it.
+class SpikePlanner {
+ public:
+  SpikePlanner(const OccupancyGrid& grid, SpikeOptions options = {});
+  PlanResult plan(const Cell& start, const Cell& goal);
+  const Quadtree& quadtree() const { return *tree_; }
+  const OccupancyGrid& grid() const { return grid_; }
+
+ private:
+  double search(const Cell& start, const Cell& goal, std::vector<Cell>& path, int& expansions);
+  int set_vertex(int s, int n_leaves);
+  std::vector<Cell> refine(const std::vector<Cell>& path);
+
+  const OccupancyGrid& grid_;
+  SpikeOptions options_;
+  std::unique_ptr<Quadtree> tree_;
+  std::unique_ptr<GridAstar> fallback_;
+  // search state, indexed by leaf id; start = n, goal = n + 1
+  std::vector<double> g_;
+  std::vector<int> parent_;
+  std::vector<unsigned> stamp_;
+  std::vector<unsigned char> closed_;
+  std::vector<Cell> point_;
+  unsigned run_ = 0;
+  std::vector<unsigned> leaf_mark_;
+  std::vector<unsigned> cell_mark_;
+  unsigned mark_ = 0;
+};
+
+/// Removes waypoints while the straight segment stays valid (greedy string
+/// pulling from the first waypoint). Never lengthens the path.
+std::vector<Cell> string_pull(const OccupancyGrid& grid, const std::vector<Cell>& path);
+std::vector<Cell> string_pull(const Quadtree& tree, const std::vector<Cell>& path);
+
+}  // namespace mrt::spike
