@@ -191,8 +191,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "airboard_frame: " << e.what() << "\nRun with --help for more information.\n";
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::cerr << "airboard_frame: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
+              << "\nRun with --help for more information.\n";
     return 2;
   }
   try {

@@ -22,8 +22,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "brian_check: " << e.what() << "\nRun with --help for more information.\n";
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::cerr << "brian_check: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
+              << "\nRun with --help for more information.\n";
     return 2;
   }
   std::error_code ec;

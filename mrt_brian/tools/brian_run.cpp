@@ -78,6 +78,11 @@ int main(int argc, char** argv) {
     if (!defuzz.empty()) opt.defuzzification = parse_defuzz_method(defuzz);
   } catch (const CLI::Success& e) {
     return app.exit(e);
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n",
+                 extra.empty() ? e.what() : CLI::ExtrasError(extra).what());
+    return 2;
   } catch (const std::exception& e) {  // CLI::ParseError or a bad --profile/--weight/... name
     std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n", e.what());
     return 2;

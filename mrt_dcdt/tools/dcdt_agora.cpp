@@ -238,8 +238,10 @@ int parse_args(int argc, char** argv, Options& o) {
     app.parse(args);
   } catch (const CLI::Success& e) {
     return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "dcdt_agora: " << e.what() << "\nRun with --help for more information.\n";
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::cerr << "dcdt_agora: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
+              << "\nRun with --help for more information.\n";
     return 2;
   }
   if (!r.check_xml.empty()) return answer_at_once("--check-xml", r.check_xml);

@@ -34,7 +34,9 @@ inline int parse_cli(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << app.get_name() << ": " << e.what() << "\n"
+    // CLI11 checks required options before unknown ones: name the unknown first.
+    const auto extra = app.remaining(true);
+    std::cerr << app.get_name() << ": " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what()) << "\n"
               << "Run with --help for more information.\n";
     return kUsageError;
   }
