@@ -87,3 +87,27 @@ TEST(SimRunCli, MissingValueExitsTwo) {
   EXPECT_NE(o.text.find("--duration"), std::string::npos) << o.text;
   EXPECT_EQ(out(SIM_RUN, "--world w.yaml --twist 1 0 0 --out t.csv --duration"), "");
 }
+
+TEST(SimBenchCli, HelpExitsZeroAndListsEveryOption) {
+  const Output o = help(SIM_BENCH);
+  EXPECT_EQ(o.code, 0);
+  EXPECT_NE(o.text.find("world"), std::string::npos) << "world";
+  EXPECT_NE(o.text.find("seconds"), std::string::npos) << "seconds";
+  EXPECT_NE(o.text.find("(s"), std::string::npos) << "(s";
+}
+
+TEST(SimBenchCli, UnknownOptionExitsTwo) {
+  const Output o = err(SIM_BENCH, "--bogus");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.text.find("sim_bench: "), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("--bogus"), std::string::npos) << o.text;
+  EXPECT_EQ(out(SIM_BENCH, "--bogus"), "");
+}
+
+TEST(SimBenchCli, BadNumberExitsTwo) {
+  const Output o = err(SIM_BENCH, "w.yaml 1s");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.text.find("sim_bench: "), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("seconds"), std::string::npos) << o.text;
+  EXPECT_EQ(out(SIM_BENCH, "w.yaml 1s"), "");
+}
