@@ -6,8 +6,6 @@
 // Prints `name: value unit` lines.
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
-
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -154,20 +152,7 @@ void print(const char* name, double v, const char* unit) { std::printf("%s: %.3f
 }  // namespace
 
 int main(int argc, char** argv) {
-  double seconds = 1.0;
-  CLI::App app{"Mr. BRIAN benchmark: prints `metric: value unit` lines.", "brian_bench"};
-  app.add_option("seconds", seconds, "wall time per metric (s, > 0), default 1")->check(CLI::PositiveNumber);
-  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_brian).
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    const auto extra = app.remaining(true);
-    std::fprintf(stderr, "brian_bench: %s\nRun with --help for more information.\n",
-                 extra.empty() ? e.what() : CLI::ExtrasError(extra).what());
-    return 2;
-  }
+  const double seconds = argc > 1 ? std::atof(argv[1]) : 1.0;
   const std::string data = MRT_BRIAN_BENCH_DATA;
   const auto inputs = parse_crisp_input(read_text_file(data + "/isaac/input.txt"), "input.txt");
 

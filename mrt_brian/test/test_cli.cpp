@@ -109,26 +109,3 @@ TEST(BrianCheckCli, TooManyArgumentsExitsTwo) {
   EXPECT_NE(o.text.find("b"), std::string::npos) << o.text;
   EXPECT_EQ(out(BRIAN_CHECK, "a b"), "");
 }
-
-TEST(BrianBenchCli, HelpExitsZeroAndListsEveryOption) {
-  const Output o = help(BRIAN_BENCH);
-  EXPECT_EQ(o.code, 0);
-  EXPECT_NE(o.text.find("seconds"), std::string::npos) << "seconds";
-  EXPECT_NE(o.text.find("(s"), std::string::npos) << "(s";
-}
-
-TEST(BrianBenchCli, UnknownOptionExitsTwo) {
-  const Output o = err(BRIAN_BENCH, "--bogus");
-  EXPECT_EQ(o.code, 2);
-  EXPECT_NE(o.text.find("brian_bench: "), std::string::npos) << o.text;
-  EXPECT_NE(o.text.find("--bogus"), std::string::npos) << o.text;
-  EXPECT_EQ(out(BRIAN_BENCH, "--bogus"), "");
-}
-
-TEST(BrianBenchCli, BadNumberExitsTwo) {
-  const Output o = err(BRIAN_BENCH, "1s");
-  EXPECT_EQ(o.code, 2);
-  EXPECT_NE(o.text.find("brian_bench: "), std::string::npos) << o.text;
-  EXPECT_NE(o.text.find("seconds"), std::string::npos) << o.text;
-  EXPECT_EQ(out(BRIAN_BENCH, "1s"), "");
-}
