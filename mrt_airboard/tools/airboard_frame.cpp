@@ -9,6 +9,8 @@
 //   airboard_frame decode [--binary] [FILE]            (hex bytes, whitespace separated; '-' or none = stdin)
 //
 // Exit codes: 0 ok, 2 usage or input error.
+#include <CLI/CLI.hpp>
+
 #include <cctype>
 #include <cstdio>
 #include <fstream>
@@ -26,8 +28,8 @@ using namespace mrt::airboard;
 namespace {
 
 int usage() {
-  std::cerr << "usage: airboard_frame encode set_speed|set_pwm|set_gains|set_stream|get_state|heartbeat|get_info SEQ [ARGS..]\n"
-               "       airboard_frame decode [--binary] [FILE]\n";
+  std::cerr << "airboard_frame: wrong number of arguments for this frame type\n"
+               "Run with --help for more information.\n";
   return 2;
 }
 
@@ -100,13 +102,11 @@ void print(const Frame& f) {
   std::cout << '\n';
 }
 
-int encode(const std::vector<std::string>& a) {
-  if (a.size() < 2) return usage();
-  const auto seq = static_cast<uint8_t>(std::stoi(a[1]));
+int encode(const std::string& t, int seq_number, const std::vector<std::string>& args) {
+  const auto seq = static_cast<uint8_t>(seq_number);
   std::vector<double> v;
-  for (std::size_t i = 2; i < a.size(); ++i) v.push_back(num(a[i]));
+  for (const std::string& a : args) v.push_back(num(a));
   Frame f;
-  const std::string& t = a[0];
   if (t == "set_speed") f = make_set_speed(seq, v);
   else if (t == "set_pwm") f = make_set_pwm(seq, v);
   else if (t == "set_gains" && v.size() == 3) f = make_set_gains(seq, Gains{static_cast<uint8_t>(v[0]), v[1], v[2]});
@@ -124,15 +124,9 @@ int encode(const std::vector<std::string>& a) {
   return 0;
 }
 
-int decode(std::vector<std::string> a) {
-  bool binary = false;
-  if (!a.empty() && a[0] == "--binary") {
-    binary = true;
-    a.erase(a.begin());
-  }
+int decode(bool binary, const std::string& name) {
   std::ifstream file;
   std::istream* in = &std::cin;
-  const std::string name = a.empty() ? "-" : a[0];
   if (name != "-") {
     file.open(name, std::ios::binary);
     if (!file) {
@@ -172,16 +166,42 @@ int decode(std::vector<std::string> a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> a(argv + 1, argv + argc);
-  if (a.empty()) return usage();
-  const std::string cmd = a[0];
-  a.erase(a.begin());
+  CLI::App app{"Encodes AIRBoard frames to hex, or decodes a capture of the serial line into\n"
+               "readable frames. Exit 0 ok, 2 on usage or input errors.",
+               "airboard_frame"};
+  app.require_subcommand(1);
+  std::string type, file = "-";
+  int seq = 0;
+  bool binary = false;
+  std::vector<std::string> args;
+  CLI::App* enc = app.add_subcommand("encode", "print one frame as hex bytes");
+  enc->add_option("type", type,
+                  "set_speed W1 [W2 ..] (rad/s) | set_pwm D1 [D2 ..] (duty in [-1, 1]) |\n"
+                  "set_gains MOTOR KP KI (MOTOR 255 = all) | set_stream PERIOD_MS [FORMAT]\n"
+                  "(ms; FORMAT 0 = STATE, 1 = compact) | get_state | heartbeat | get_info")
+      ->required()
+      ->check(CLI::IsMember({"set_speed", "set_pwm", "set_gains", "set_stream", "get_state", "heartbeat", "get_info"}));
+  enc->add_option("seq", seq, "sequence number (0..255)")->required()->check(CLI::Range(0, 255));
+  enc->add_option("args", args, "the numbers of the frame type, see above");
+  CLI::App* dec = app.add_subcommand("decode", "print the frames of a capture and the decoder's counters");
+  dec->add_flag("--binary", binary, "FILE holds raw bytes (default: hex bytes, whitespace separated, # comments)");
+  dec->add_option("file", file, "capture file; '-' or none = stdin");
+  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_airboard).
   try {
-    if (cmd == "encode") return encode(a);
-    if (cmd == "decode") return decode(a);
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::cerr << "airboard_frame: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
+              << "\nRun with --help for more information.\n";
+    return 2;
+  }
+  try {
+    if (enc->parsed()) return encode(type, seq, args);
+    return decode(binary, file);
   } catch (const std::exception& e) {
     std::cerr << "airboard_frame: " << e.what() << '\n';
     return 2;
   }
-  return usage();
 }

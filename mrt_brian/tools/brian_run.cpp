@@ -4,9 +4,10 @@
 // the format of the 2009 engine's reference traces. With --time it prints
 // instead the engine's own time per cycle on that input (the id-based
 // interface, no parsing, no name lookups, no printing).
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -47,45 +48,45 @@ void time_engine(Brian& brian, const std::vector<CrispDataList>& cycles) {
               n > 0 ? seconds * 1e6 / n : 0.0, cycles.size(), reps);
 }
 
-int usage(const char* msg) {
-  if (msg) std::fprintf(stderr, "brian_run: %s\n", msg);
-  std::fprintf(stderr,
-               "usage: brian_run [--profile manual|legacy] [--trace | --time] [--threshold T]\n"
-               "                 [--weight mult|max|min] [--float average|max|min|best]\n"
-               "                 [--defuzz singleton|barycenter] <dir | BrianConfigs.ini> <input-file>\n");
-  return 2;
-}
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace mrt::brian;
   BrianOptions opt;
   bool trace = false, timing = false;
-  std::string config, input;
+  std::string config, input, profile, weight, floating, defuzz;
+  CLI::App app{"Runs Mr. BRIAN on a crisp input file and prints, per cycle, \"=== CYCLE n\", an empty\n"
+               "line and the sorted CMD lines (the 2009 engine's reference trace format); with --time\n"
+               "the engine's own time per cycle instead.",
+               "brian_run"};
+  app.add_option("--profile", profile, "manual|legacy: the manual's semantics or the 2009 engine's");
+  app.add_flag("--trace", trace, "print every trace line, not only the CMD lines");
+  app.add_flag("--time", timing, "print engine_us_per_cycle (us) and the counts instead of the trace");
+  app.add_option("--threshold", opt.threshold, "activation threshold of the behaviours (0..1)");
+  app.add_option("--weight", weight, "mult|max|min: weight composer");
+  app.add_option("--float", floating, "average|max|min|best: float composer");
+  app.add_option("--defuzz", defuzz, "singleton|barycenter: defuzzification");
+  app.add_option("config", config, "configuration directory or its BrianConfigs.ini")->required();
+  app.add_option("input", input, "crisp input file (one block of NAME VALUE [RELIABILITY] per cycle)")
+      ->required();
+  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_brian).
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++i];
-      };
-      if (a == "--trace") trace = true;
-      else if (a == "--time") timing = true;
-      else if (a == "--profile") opt.profile = parse_profile(value());
-      else if (a == "--threshold") opt.threshold = std::stod(value());
-      else if (a == "--weight") opt.weight_composer = parse_weight_composer(value());
-      else if (a == "--float") opt.float_composer = parse_float_composer(value());
-      else if (a == "--defuzz") opt.defuzzification = parse_defuzz_method(value());
-      else if (a == "-h" || a == "--help") return usage(nullptr);
-      else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
-      else if (config.empty()) config = a;
-      else if (input.empty()) input = a;
-      else return usage("too many arguments");
-    }
-  } catch (const std::exception& e) {
-    return usage(e.what());
+    app.parse(argc, argv);
+    if (!profile.empty()) opt.profile = parse_profile(profile);
+    if (!weight.empty()) opt.weight_composer = parse_weight_composer(weight);
+    if (!floating.empty()) opt.float_composer = parse_float_composer(floating);
+    if (!defuzz.empty()) opt.defuzzification = parse_defuzz_method(defuzz);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n",
+                 extra.empty() ? e.what() : CLI::ExtrasError(extra).what());
+    return 2;
+  } catch (const std::exception& e) {  // CLI::ParseError or a bad --profile/--weight/... name
+    std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n", e.what());
+    return 2;
   }
-  if (config.empty() || input.empty()) return usage("expected a configuration and an input file");
   try {
     auto brian = Brian::from_path(config, opt);
     const auto cycles = parse_crisp_input(read_text_file(input), input);

@@ -1,6 +1,8 @@
 // dcdt_agora: a legacy-style Agora built only on the DCDT library. Publishes
 // and subscribes test messages from the command line or from XML files: the
 // stand-in for a legacy MRT module in tests and demos. Run with --help.
+#include <CLI/CLI.hpp>
+
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -21,30 +23,9 @@ using namespace mrt::dcdt;
 
 namespace {
 
-const char* kUsage = R"(usage: dcdt_agora [options]
-  --config FILE          NETWORK Agora configured by FILE (manual 3.3.1); default STANDALONE
-  --inner-dir DIR        inner-link directory (default $DCDT_INNER_DIR or /tmp/dcdt-<uid>)
-  --no-inner             do not talk to the other Agoras of this machine
-  --no-finder            NETWORK: no multicast discovery
-  --id N                 Agora id (default random)
-  --publish TYPE         message type to publish (legacy name or number)
-  --warranty W           none | retransmit | guaranteed (default guaranteed)
-  --text STRING          payload text; "{i}" is replaced by the message index
-  --xml FILE             payload from an XML message file, validated (repeatable, cycled)
-  --count N              messages to publish (default 1)
-  --rate HZ              publishing rate (default 10; 0 = as fast as possible)
-  --wait-peers N         before publishing wait (at most 10 s) for N peers
-                         (inner peers + connected channels)
-  --subscribe TYPE[:SCOPE]  subscribe (SCOPE local|remote|all, default all); repeatable
-  --expect N             exit 0 once N messages were received (1 if not within --duration)
-  --linger MS            after --expect is met, keep receiving MS milliseconds (default 0)
-  --duration S           run at most S seconds (default 10)
-  --out FILE             write received messages and status lines there (default stdout)
-  --check-xml FILE       validate an XML message file and exit (0 valid, 2 invalid)
-  --check-config FILE    parse a configuration file, print it normalised, exit (0 / 2)
-Received messages are printed one per line:
+const char* kFooter = R"(Received messages are printed one per line:
   recv type=T agora=A member=M seq=S hops=H scope=local|remote warranty=W len=L payload=P
-)";
+roslaunch's __name:= and __log:= arguments are ignored.)";
 
 std::atomic<bool> g_signal{false};
 void OnSignal(int) { g_signal = true; }
@@ -186,13 +167,9 @@ int ParseType(const std::string& s) {
   return t;
 }
 
-// Handles the options that answer at once (--help, --check-xml,
-// --check-config): returns their exit code, or -1 for a normal option.
+// Handles the options that answer at once (--check-xml, --check-config):
+// returns their exit code.
 int answer_at_once(const std::string& a, const std::string& value) {
-  if (a == "--help" || a == "-h") {
-    std::cout << kUsage;
-    return 0;
-  }
   if (a == "--check-xml") {
     std::string err = validate_xml(ReadFile(value));
     if (!err.empty()) {
@@ -212,78 +189,80 @@ int answer_at_once(const std::string& a, const std::string& value) {
   return 0;
 }
 
-// One option with its value (need() fetches the value). Returns false for an
-// invalid --xml file (reported on stderr).
-bool parse_option(const std::string& a, const std::function<std::string()>& need, Options& o, std::string& config) {
-  if (a == "--config") {
-    config = need();
-  } else if (a == "--inner-dir") {
-    o.agora.inner_dir = need();
-  } else if (a == "--no-inner") {
-    o.agora.inner_links = false;
-  } else if (a == "--no-finder") {
-    o.agora.finder = false;
-  } else if (a == "--id") {
-    o.agora.agora_id = std::stoi(need());
-  } else if (a == "--publish") {
-    o.publish_type = ParseType(need());
-  } else if (a == "--warranty") {
-    std::string w = need();
-    if (w == "none") o.warranty = DCDT_DW_NONE;
-    else if (w == "retransmit") o.warranty = DCDT_DW_RETRANSMIT;
-    else if (w == "guaranteed") o.warranty = DCDT_DW_GUARANTEED;
-    else throw std::invalid_argument("warranty must be none, retransmit or guaranteed");
-  } else if (a == "--text") {
-    o.text = need();
-  } else if (a == "--xml") {
-    std::string f = need(), x = ReadFile(f);
-    std::string err = validate_xml(x);
-    if (!err.empty()) {
-      std::cerr << f << ": " << err << "\n";
-      return false;
-    }
-    o.xml_payloads.push_back(x);
-  } else if (a == "--count") {
-    o.count = std::stol(need());
-  } else if (a == "--rate") {
-    o.rate = std::stod(need());
-  } else if (a == "--wait-peers") {
-    o.wait_peers = std::stoi(need());
-  } else if (a == "--subscribe") {
-    std::string s = need();
-    auto c = s.find(':');
-    o.subs.emplace_back(ParseType(s.substr(0, c)), c == std::string::npos ? DCDT_ALL_MSG : ParseScope(s.substr(c + 1)));
-  } else if (a == "--expect") {
-    o.expect = std::stol(need());
-  } else if (a == "--linger") {
-    o.linger_ms = std::stol(need());
-  } else if (a == "--duration") {
-    o.duration = std::stod(need());
-  } else if (a == "--out") {
-    o.out = need();
-  } else {
-    throw std::invalid_argument("unknown option " + a + " (see --help)");
-  }
-  return true;
+// The options into the CLI11 parser; the values needing conversion go to `raw`.
+struct RawOptions {
+  std::string config, publish, warranty = "guaranteed", check_xml, check_config;
+  std::vector<std::string> xml_files, subs;
+};
+
+void add_options(CLI::App& app, Options& o, RawOptions& r) {
+  app.add_option("--config", r.config, "NETWORK Agora configured by FILE (manual 3.3.1); default STANDALONE");
+  app.add_option("--inner-dir", o.agora.inner_dir,
+                 "inner-link directory (default $DCDT_INNER_DIR or /tmp/dcdt-<uid>)");
+  app.add_flag("--no-inner{false}", o.agora.inner_links, "do not talk to the other Agoras of this machine");
+  app.add_flag("--no-finder{false}", o.agora.finder, "NETWORK: no multicast discovery");
+  app.add_option("--id", o.agora.agora_id, "Agora id (default random)");
+  app.add_option("--publish", r.publish, "message type to publish (legacy name or number)");
+  app.add_option("--warranty", r.warranty, "none | retransmit | guaranteed (default guaranteed)")
+      ->check(CLI::IsMember({"none", "retransmit", "guaranteed"}));
+  app.add_option("--text", o.text, "payload text; \"{i}\" is replaced by the message index (default \"message {i}\")");
+  app.add_option("--xml", r.xml_files, "payload from an XML message file, validated (repeatable, cycled)");
+  app.add_option("--count", o.count, "messages to publish (default 1)");
+  app.add_option("--rate", o.rate, "publishing rate (Hz, default 10; 0 = as fast as possible)");
+  app.add_option("--wait-peers", o.wait_peers,
+                 "before publishing wait (at most 10 s) for N peers (inner peers + connected channels)");
+  app.add_option("--subscribe", r.subs, "TYPE[:SCOPE]: subscribe (SCOPE local|remote|all, default all); repeatable");
+  app.add_option("--expect", o.expect, "exit 0 once N messages were received (1 if not within --duration)");
+  app.add_option("--linger", o.linger_ms, "after --expect is met, keep receiving MS milliseconds (default 0)");
+  app.add_option("--duration", o.duration, "run at most S seconds (default 10)");
+  app.add_option("--out", o.out, "write received messages and status lines to FILE (default stdout)");
+  app.add_option("--check-xml", r.check_xml, "validate an XML message file and exit (0 valid, 2 invalid)");
+  app.add_option("--check-config", r.check_config, "parse a configuration file, print it normalised, exit (0 / 2)");
+  app.footer(kFooter);
 }
 
 // Parses the command line into o: returns -1 to go on, else the exit code.
 int parse_args(int argc, char** argv, Options& o) {
-  std::string config;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto need = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(std::string("missing value after ") + argv[i]);
-      return argv[++i];
-    };
-    if (a.rfind("__", 0) == 0) continue;  // roslaunch remappings (__name:=, __log:=)
-    if (a == "--help" || a == "-h") return answer_at_once(a, "");
-    if (a == "--check-xml" || a == "--check-config") return answer_at_once(a, need());
-    if (!parse_option(a, need, o, config)) return 2;
+  // roslaunch appends __name:= and __log:= arguments, which CLI11 cannot be
+  // told to skip: they are dropped here (CLI11 takes the vector reversed).
+  std::vector<std::string> args;
+  for (int i = argc - 1; i >= 1; --i)
+    if (std::string(argv[i]).rfind("__", 0) != 0) args.emplace_back(argv[i]);
+  CLI::App app{"A legacy-style Agora built only on the DCDT library: publishes and subscribes test\n"
+               "messages from the command line or from XML files.",
+               "dcdt_agora"};
+  RawOptions r;
+  add_options(app, o, r);
+  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_dcdt).
+  try {
+    app.parse(args);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
+    const auto extra = app.remaining(true);
+    std::cerr << "dcdt_agora: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
+              << "\nRun with --help for more information.\n";
+    return 2;
   }
-  if (!config.empty()) {
+  if (!r.check_xml.empty()) return answer_at_once("--check-xml", r.check_xml);
+  if (!r.check_config.empty()) return answer_at_once("--check-config", r.check_config);
+  if (!r.publish.empty()) o.publish_type = ParseType(r.publish);
+  o.warranty = r.warranty == "none" ? DCDT_DW_NONE : r.warranty == "retransmit" ? DCDT_DW_RETRANSMIT : DCDT_DW_GUARANTEED;
+  for (const std::string& f : r.xml_files) {
+    std::string x = ReadFile(f), err = validate_xml(x);
+    if (!err.empty()) {
+      std::cerr << f << ": " << err << "\n";
+      return 2;
+    }
+    o.xml_payloads.push_back(x);
+  }
+  for (const std::string& s : r.subs) {
+    auto c = s.find(':');
+    o.subs.emplace_back(ParseType(s.substr(0, c)), c == std::string::npos ? DCDT_ALL_MSG : ParseScope(s.substr(c + 1)));
+  }
+  if (!r.config.empty()) {
     o.agora.network = true;
-    o.agora.config = load_agora_config(config);
+    o.agora.config = load_agora_config(r.config);
   }
   return -1;
 }

@@ -20,16 +20,9 @@
 
 #include "mrt_common/angle.h"
 #include "mrt_mice/mice_io.h"
+#include "mrt_sim/cli.h"
 
 namespace {
-int usage(const char* msg) {
-  std::cerr << "mice_calibrate: " << msg << "\n"
-            << "usage: mice_calibrate [--in runs.csv] [--push-bag run.bag]... [--turn-bag run.bag]...\n"
-               "         [--push-distance 0.5] [--turn-angle-deg 360] [--topic mice]\n"
-               "         --out params.yaml [--base base.yaml]\n";
-  return 2;
-}
-
 // One run from a bag: the sum of every mrt_msgs/MiceReading in it (on
 // `topic` if not empty).
 mrt::mice::CalibrationRun run_from_bag(const std::string& path, bool push, double amount,
@@ -66,37 +59,48 @@ int main(int argc, char** argv) {
   std::string in_path, out_path, base_path, topic;
   std::vector<std::string> push_bags, turn_bags;
   double push_distance = 0.5, turn_angle_deg = 360.0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if ((a == "--in" || a == "--out" || a == "--base" || a == "--topic") && i + 1 < argc) {
-      (a == "--in" ? in_path : a == "--out" ? out_path : a == "--base" ? base_path : topic) = argv[++i];
-    } else if ((a == "--push-bag" || a == "--turn-bag") && i + 1 < argc) {
-      (a == "--push-bag" ? push_bags : turn_bags).push_back(argv[++i]);
-    } else if ((a == "--push-distance" || a == "--turn-angle-deg") && i + 1 < argc) {
-      char* end = nullptr;
-      const double v = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(v != 0.0) || !std::isfinite(v))
-        return usage((a + " needs a non-zero number").c_str());
-      (a == "--push-distance" ? push_distance : turn_angle_deg) = v;
-    } else if (a == "-h" || a == "--help") {
-      usage("help");
-      return 0;
-    } else {
-      return usage(("unknown or incomplete argument '" + a + "'").c_str());
-    }
+  CLI::App app{"Mice calibration (manual 4.2): from straight pushes and turns in place estimates\n"
+               "D, sigma_l, sigma_r, delta, the mouse positions and resolutions, writes the YAML\n"
+               "parameter file and prints the residuals.",
+               "mice_calibrate"};
+  const CLI::Validator non_zero(
+      [](std::string& v) {
+        const double x = std::strtod(v.c_str(), nullptr);
+        return x != 0.0 && std::isfinite(x) ? std::string() : std::string("needs a non-zero number");
+      },
+      "NONZERO");
+  app.add_option("--in", in_path, "runs CSV: run,kind,amount,left_dx,left_dy,right_dx,right_dy");
+  app.add_option("--push-bag", push_bags, "bag of mrt_msgs/MiceReading of one straight push (repeatable)");
+  app.add_option("--turn-bag", turn_bags, "bag of mrt_msgs/MiceReading of one turn in place (repeatable)");
+  app.add_option("--push-distance", push_distance, "distance of each bag push (m), default 0.5")
+      ->check(non_zero);
+  app.add_option("--turn-angle-deg", turn_angle_deg, "angle of each bag turn (deg), default 360")
+      ->check(non_zero);
+  app.add_option("--topic", topic, "topic of the readings in the bags (default: any)");
+  app.add_option("--out", out_path, "parameter file to write (YAML)")->required();
+  app.add_option("--base", base_path, "parameter file (YAML) whose other values are kept");
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
+  if (in_path.empty() && push_bags.empty() && turn_bags.empty()) {
+    std::cerr << "mice_calibrate: give the runs with --in or --push-bag/--turn-bag\n";
+    return 2;
   }
-  if (out_path.empty()) return usage("--out is required");
-  if (in_path.empty() && push_bags.empty() && turn_bags.empty())
-    return usage("give the runs with --in or --push-bag/--turn-bag");
   using mrt::common::rad_to_deg;
   try {
     mrt::mice::MiceParams base;
     if (!base_path.empty()) base = mrt::mice::load_params(base_path);
     std::vector<mrt::mice::CalibrationRun> runs;
     if (!in_path.empty()) runs = mrt::mice::read_calibration_csv(in_path);
-    for (const auto& b : push_bags) runs.push_back(run_from_bag(b, true, push_distance, topic));
-    for (const auto& b : turn_bags)
+    mrt::cli::Progress progress("mice_calibrate", static_cast<double>(push_bags.size() + turn_bags.size()));
+    double bags_read = 0;
+    for (const auto& b : push_bags) {
+      progress.update(bags_read++);
+      runs.push_back(run_from_bag(b, true, push_distance, topic));
+    }
+    for (const auto& b : turn_bags) {
+      progress.update(bags_read++);
       runs.push_back(run_from_bag(b, false, mrt::common::deg_to_rad(turn_angle_deg), topic));
+    }
+    progress.finish();
     mrt::mice::CalibrationResult res;
     try {
       res = mrt::mice::calibrate(runs, base);

@@ -19,6 +19,7 @@
 #include "mrt_common/angle.h"
 #include "mrt_murea/localizer.h"
 #include "mrt_murea/tracker.h"
+#include "mrt_sim/cli.h"
 #include "mrt_sim/sensors.h"
 #include "mrt_sim/world.h"
 
@@ -295,9 +296,13 @@ void kidnap_run(const mrt::sim::World& world, const mrt::murea::FeatureMap& map)
 }
 
 int main(int argc, char** argv) {
-  const int n = argc > 1 ? std::atoi(argv[1]) : 1000;
-  const int m = argc > 2 ? std::atoi(argv[2]) : 3;
-  const std::string file = argc > 3 ? argv[3] : std::string(MRT_MUREA_DATA) + "/msl_field.yaml";
+  int n = 1000, m = 3;
+  std::string file = std::string(MRT_MUREA_DATA) + "/msl_field.yaml";
+  CLI::App app{"MUREA benchmark: prints `metric: value unit` lines.", "murea_bench"};
+  app.add_option("poses", n, "random poses localized (count), default 1000")->check(CLI::PositiveNumber);
+  app.add_option("repeats", m, "repetitions (count), default 3")->check(CLI::PositiveNumber);
+  app.add_option("world", file, "world file (YAML), default test/data/msl_field.yaml");
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   mrt::sim::World world = mrt::sim::load_world(file);
   world.movers.clear();
   world.ball.enabled = false;

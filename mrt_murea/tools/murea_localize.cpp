@@ -9,10 +9,11 @@
 #include "mrt_common/angle.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_murea/percept_csv.h"
+#include "mrt_sim/cli.h"
 #include "mrt_sim/world.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"MUREA global localization: one pose per percept frame"};
+  CLI::App app{"MUREA global localization: one pose per percept frame", "murea_localize"};
   std::string map_file, percept_file;
   std::vector<double> accuracy{0.05, 1.0};
   double timeout = 1.0;
@@ -20,12 +21,7 @@ int main(int argc, char** argv) {
   app.add_option("--percepts", percept_file, "CSV: frame,class,color,distance,bearing,reliability")->required();
   app.add_option("--accuracy", accuracy, "lattice spacing: XY (m) THETA (deg), default 0.05 1")->expected(2);
   app.add_option("--timeout", timeout, "seconds per frame (0 = no limit), default 1");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
     const mrt::sim::World world = mrt::sim::load_world(map_file);
     const auto frames = mrt::murea::load_percept_csv(percept_file);

@@ -1,53 +1,40 @@
 // roby_run: Roby in closed loop without ROS (mrt_sim + SCARE + Mr. BRIAN).
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <string>
 
 #include "mrt_common/parse_error.h"
 #include "mrt_roby/roby_loop.h"
-
-namespace {
-int usage() {
-  std::cerr << "usage: roby_run --world W.yaml --map MAP.yaml --tasks TASKS.yaml --brian DIR\n"
-               "                [--robot NAME] [--duration S] [--truth] [--trace]\n";
-  return 2;
-}
-}  // namespace
+#include "mrt_sim/cli.h"
 
 int main(int argc, char** argv) {
   mrt::roby::RobyLoopOptions o;
   bool trace = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-    const char* v = nullptr;
-    if (a == "--truth") o.use_ground_truth = true;
-    else if (a == "--trace") trace = true;
-    else if ((a == "--world" || a == "--map" || a == "--tasks" || a == "--brian" || a == "--robot" ||
-              a == "--duration") && (v = next())) {
-      if (a == "--world") o.world = v;
-      else if (a == "--map") o.map = v;
-      else if (a == "--tasks") o.tasks = v;
-      else if (a == "--brian") o.brian = v;
-      else if (a == "--robot") o.robot = v;
-      else {
-        char* end = nullptr;
-        o.duration = std::strtod(v, &end);
-        if (*end || !(o.duration > 0)) return usage();
-      }
-    } else return usage();
-  }
-  if (o.world.empty() || o.map.empty() || o.tasks.empty() || o.brian.empty()) return usage();
+  CLI::App app{"Roby in closed loop without ROS (mrt_sim + SCARE + Mr. BRIAN); exit 0 when the\n"
+               "route was completed, 1 when not, 2 on usage or file errors.",
+               "roby_run"};
+  app.add_option("--world", o.world, "mrt_sim world file (YAML)")->required();
+  app.add_option("--map", o.map, "Roby map file (YAML)")->required();
+  app.add_option("--tasks", o.tasks, "SCARE task file (YAML)")->required();
+  app.add_option("--brian", o.brian, "Mr. BRIAN configuration directory")->required();
+  app.add_option("--robot", o.robot, "robot name in the world")->capture_default_str();
+  app.add_option("--duration", o.duration, "simulated time limit (s, > 0)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_flag("--truth", o.use_ground_truth, "localize with the simulator's ground truth");
+  app.add_flag("--trace", trace, "print every route event: time, type, #index, point, pose (s, m)");
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
     std::size_t shown = 0;
-    const auto res = mrt::roby::run_roby_loop(o, [&](double, const mrt::roby::RobyLoopResult& r) {
+    mrt::cli::Progress progress("roby_run", o.duration);
+    const auto res = mrt::roby::run_roby_loop(o, [&](double t, const mrt::roby::RobyLoopResult& r) {
+      progress.update(t);
       for (; trace && shown < r.events.size(); ++shown) {
         const auto& e = r.events[shown];
         std::printf("%8.2f %-16s #%zu (%.2f, %.2f) at (%.2f, %.2f)\n", e.time, to_string(e.type),
                     e.index, e.point.x, e.point.y, e.pose.x, e.pose.y);
       }
     });
+    progress.finish();
     std::printf("path points reached: %zu of %zu\n", res.reached, res.route_points);
     std::printf("failed: %zu, re-plans: %zu, completed: %s\n", res.failed, res.replans,
                 res.completed ? "yes" : "no");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mrt_common/angle.h"
+#include "mrt_sim/cli.h"
 #include "mrt_sim/simulator.h"
 
 using namespace mrt::sim;
@@ -53,10 +54,13 @@ World msl_world(const std::string& path, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Usage: sim_bench [WORLD.yaml [SECONDS_PER_METRIC]], run from the
-  // workspace root by default.
-  const std::string path = argc > 1 ? argv[1] : "mrt_sim/worlds/msl_field.yaml";
-  const double secs = argc > 2 ? std::stod(argv[2]) : 1.0;
+  // Run from the workspace root by default.
+  std::string path = "mrt_sim/worlds/msl_field.yaml";
+  double secs = 1.0;
+  CLI::App app{"Simulator benchmark: prints `metric: value unit` lines.", "sim_bench"};
+  app.add_option("world", path, "world file (YAML), default mrt_sim/worlds/msl_field.yaml");
+  app.add_option("seconds", secs, "wall time per metric (s, > 0), default 1")->check(CLI::PositiveNumber);
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   World world;
   try {
     world = load_world(path);

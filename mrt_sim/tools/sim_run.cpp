@@ -1,70 +1,44 @@
 // sim_run: drives one robot of a world with a constant twist and writes the
 // ground truth (and optionally the mice samples) as CSV.
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "mrt_common/csv.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_sim/cli.h"
 #include "mrt_sim/simulator.h"
 
 namespace {
 
-const char* kUsage =
-    "usage: sim_run --world W.yaml [--robot NAME] --twist VX VY OMEGA --duration S\n"
-    "               --out truth.csv [--mice mice.csv] [--dt SECONDS]\n"
-    "  Drives robot NAME (default: the first) with the body twist VX VY (m/s)\n"
-    "  OMEGA (rad/s) for S seconds; writes t,x,y,theta every step to truth.csv\n"
-    "  and t,left_dx,left_dy,right_dx,right_dy (counts) at the mice rate.\n";
-
-int usage(const std::string& error) {
-  std::cerr << "sim_run: " << error << "\n" << kUsage;
+int error(const std::string& message) {
+  std::cerr << "sim_run: " << message << "\n";
   return 2;
-}
-
-bool to_double(const char* s, double& v) {
-  char* end = nullptr;
-  v = std::strtod(s, &end);
-  return *s != '\0' && *end == '\0' && std::isfinite(v);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string world_path, robot, out_path, mice_path;
-  double twist[3] = {0, 0, 0}, duration = -1.0, dt = 0.001;
-  bool have_twist = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](int n) { return i + n < argc; };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (a == "--world" && value(1)) {
-      world_path = argv[++i];
-    } else if (a == "--robot" && value(1)) {
-      robot = argv[++i];
-    } else if (a == "--out" && value(1)) {
-      out_path = argv[++i];
-    } else if (a == "--mice" && value(1)) {
-      mice_path = argv[++i];
-    } else if (a == "--duration" && value(1)) {
-      if (!to_double(argv[++i], duration) || duration < 0) return usage("expected a duration >= 0 s");
-    } else if (a == "--dt" && value(1)) {
-      if (!to_double(argv[++i], dt) || dt <= 0) return usage("expected a step > 0 s after --dt");
-    } else if (a == "--twist" && value(3)) {
-      for (double& t : twist)
-        if (!to_double(argv[++i], t)) return usage("expected three numbers after --twist");
-      have_twist = true;
-    } else {
-      return usage("unexpected or incomplete argument '" + a + "'");
-    }
-  }
-  if (world_path.empty() || out_path.empty() || !have_twist || duration < 0)
-    return usage("--world, --twist, --duration and --out are required");
+  std::vector<double> twist{0, 0, 0};
+  double duration = -1.0, dt = 0.001;
+  CLI::App app{
+      "Drives robot NAME (default: the first) with the body twist VX VY (m/s) OMEGA (rad/s)\n"
+      "for S seconds; writes t,x,y,theta every step to the --out CSV and\n"
+      "t,left_dx,left_dy,right_dx,right_dy (counts) at the mice rate to the --mice CSV.",
+      "sim_run"};
+  app.add_option("--world", world_path, "mrt_sim world file (YAML)")->required();
+  app.add_option("--robot", robot, "robot name in the world (default: the first)");
+  app.add_option("--twist", twist, "body twist VX VY (m/s) OMEGA (rad/s)")->expected(3)->required();
+  app.add_option("--duration", duration, "simulated time (s, >= 0)")
+      ->required()->check(CLI::NonNegativeNumber);
+  app.add_option("--out", out_path, "ground-truth CSV to write: t,x,y,theta (s, m, m, rad)")->required();
+  app.add_option("--mice", mice_path, "mice CSV to write: t,left_dx,left_dy,right_dx,right_dy (s, counts)");
+  app.add_option("--dt", dt, "simulation step (s, > 0), default 0.001")->check(CLI::PositiveNumber);
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
 
   std::unique_ptr<mrt::sim::Simulator> sim;
   try {
@@ -77,15 +51,15 @@ int main(int argc, char** argv) {
   try {
     if (!robot.empty()) index = sim->robot_index(robot);
   } catch (const std::out_of_range&) {
-    return usage("the world has no robot named '" + robot + "'");
+    return error("the world has no robot named '" + robot + "'");
   }
 
   std::ofstream truth_file(out_path);
-  if (!truth_file) return usage("cannot write '" + out_path + "'");
+  if (!truth_file) return error("cannot write '" + out_path + "'");
   std::ofstream mice_file;
   if (!mice_path.empty()) {
     mice_file.open(mice_path);
-    if (!mice_file) return usage("cannot write '" + mice_path + "'");
+    if (!mice_file) return error("cannot write '" + mice_path + "'");
   }
   mrt::common::CsvWriter truth(truth_file, {"t", "x", "y", "theta"});
   std::unique_ptr<mrt::common::CsvWriter> mice;
@@ -97,7 +71,9 @@ int main(int argc, char** argv) {
   const auto steps = static_cast<long long>(std::llround(duration / dt));
   const mrt::sim::RobotState& r = sim->robots()[index];
   truth.row({0.0, r.pose.x, r.pose.y, r.pose.theta});
+  mrt::cli::Progress progress("sim_run", static_cast<double>(steps));
   for (long long k = 0; k < steps; ++k) {
+    progress.update(static_cast<double>(k));
     sim->step();
     truth.row({sim->time(), r.pose.x, r.pose.y, r.pose.theta});
     if (mice && r.mice_ready)
