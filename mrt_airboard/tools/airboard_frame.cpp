@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
   CLI::App* dec = app.add_subcommand("decode", "print the frames of a capture and the decoder's counters");
   dec->add_flag("--binary", binary, "FILE holds raw bytes (default: hex bytes, whitespace separated, # comments)");
   dec->add_option("file", file, "capture file; '-' or none = stdin");
-  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_airboard).
+  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
                "`file:line: message`; exit 0 when clean, 1 when anything is reported, 2 on usage errors.",
                "brian_check"};
   app.add_option("config", path, "configuration directory or its BrianConfigs.ini")->required();
-  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_brian).
+  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   app.add_option("config", config, "configuration directory or its BrianConfigs.ini")->required();
   app.add_option("input", input, "crisp input file (one block of NAME VALUE [RELIABILITY] per cycle)")
       ->required();
-  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_brian).
+  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
   try {
     app.parse(argc, argv);
     if (!profile.empty()) opt.profile = parse_profile(profile);

@@ -233,7 +233,7 @@ int parse_args(int argc, char** argv, Options& o) {
                "dcdt_agora"};
   RawOptions r;
   add_options(app, o, r);
-  // The stack's CLI11 exit codes (mrt_sim/cli.h's parse_cli, not a dependency of mrt_dcdt).
+  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
   try {
     app.parse(args);
   } catch (const CLI::Success& e) {

@@ -20,7 +20,7 @@
 
 #include "mrt_common/angle.h"
 #include "mrt_mice/mice_io.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 
 namespace {
 // One run from a bag: the sum of every mrt_msgs/MiceReading in it (on

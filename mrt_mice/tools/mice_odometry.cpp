@@ -12,7 +12,7 @@
 #include "mrt_common/csv.h"
 #include "mrt_mice/mice_io.h"
 #include "mrt_mice/mice_odometry.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 
 int main(int argc, char** argv) {
   std::string params_path, in_path, out_path;

@@ -19,7 +19,7 @@
 #include "mrt_common/angle.h"
 #include "mrt_murea/localizer.h"
 #include "mrt_murea/tracker.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 #include "mrt_sim/sensors.h"
 #include "mrt_sim/world.h"
 

@@ -9,7 +9,7 @@
 #include "mrt_common/angle.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_murea/percept_csv.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 #include "mrt_sim/world.h"
 
 int main(int argc, char** argv) {

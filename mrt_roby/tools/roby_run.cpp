@@ -5,7 +5,7 @@
 
 #include "mrt_common/parse_error.h"
 #include "mrt_roby/roby_loop.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 
 int main(int argc, char** argv) {
   mrt::roby::RobyLoopOptions o;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "mrt_common/angle.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 #include "mrt_sim/simulator.h"
 
 using namespace mrt::sim;

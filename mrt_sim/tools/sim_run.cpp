@@ -9,7 +9,7 @@
 
 #include "mrt_common/csv.h"
 #include "mrt_common/parse_error.h"
-#include "mrt_sim/cli.h"
+#include "mrt_common/cli.h"
 #include "mrt_sim/simulator.h"
 
 namespace {

@@ -4,10 +4,8 @@
 //                "<tool>: <message>" and a hint to stderr and gives 2;
 //   Progress     a "tool: 42% ETA 3 s" line on stderr, only when stderr is a
 //                terminal (nothing at all when it is a file or a pipe).
-// It lives in mrt_sim because the tools that use it all depend on mrt_sim;
-// it belongs in mrt_common (see README, "Command-line tool").
-#ifndef MRT_SIM_CLI_H
-#define MRT_SIM_CLI_H
+// Needs CLI11 (Debian's libcli11-dev, header-only).
+#pragma once
 
 #include <unistd.h>
 
@@ -85,4 +83,3 @@ class Progress {
 
 }  // namespace mrt::cli
 
-#endif  // MRT_SIM_CLI_H
