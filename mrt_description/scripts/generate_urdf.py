@@ -146,9 +146,13 @@ def p3at():
                                  xyz=(0, 0, clearance + (height - clearance) / 2)))
     s += diff_wheel("left", wheelbase / 2, track / 2, r, 0.09)
     s += diff_wheel("right", wheelbase / 2, -track / 2, r, 0.09)
-    # Skid steer: each rear wheel turns with the front wheel of its side.
-    s += diff_wheel("left", -wheelbase / 2, track / 2, r, 0.09, mimic="left_wheel_joint", prefix="rear_")
-    s += diff_wheel("right", -wheelbase / 2, -track / 2, r, 0.09, mimic="right_wheel_joint", prefix="rear_")
+    # Skid steer: each rear wheel turns with the front wheel of its side. A
+    # mimic joint would say so, but rviz 1.14's RobotModel crashes on it
+    # (segfault with the Roby bringup): fixed rear wheels, which look the same.
+    for side, y in (("left", track / 2), ("right", -track / 2)):
+        name = "rear_%s_wheel" % side
+        s += link(name, visual(cylinder(r, 0.09), "wheel", rpy=(math.pi / 2, 0, 0)))
+        s += joint(name + "_joint", "fixed", "base_link", name, (-wheelbase / 2, y, r))
     s += sonar_ring(16, 0.33, 0.25)
     s += mice(0.15, -0.15)
     s += link("gps", visual(cylinder(0.04, 0.02), "dark")) + joint("gps_joint", "fixed", "base_link", "gps", (0, 0, 0.45))

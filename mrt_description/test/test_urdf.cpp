@@ -76,11 +76,13 @@ TEST(Urdf, Omni4) {
 
 TEST(Urdf, P3atSonarBeltAndSkidSteer) {
   const urdf::Model m = load("p3at");
-  EXPECT_EQ(moving_joints(m), 4);
-  // Rear wheels mimic the front wheel of their side (one motor per side).
+  // One motor per side: the front wheels are the joints; the rear wheels
+  // are fixed (drawn only), 0.268 m behind them.
+  EXPECT_EQ(moving_joints(m), 2);
   const auto rl = joint(m, "rear_left_wheel_joint");
-  ASSERT_TRUE(rl && rl->mimic);
-  EXPECT_EQ(rl->mimic->joint_name, "left_wheel_joint");
+  ASSERT_TRUE(rl);
+  EXPECT_EQ(rl->type, urdf::Joint::FIXED);
+  EXPECT_NEAR(rl->parent_to_joint_origin_transform.position.x, -0.134, 1e-9);
   // Wheel radius 0.11 m, track 0.40 m.
   EXPECT_NEAR(joint(m, "right_wheel_joint")->parent_to_joint_origin_transform.position.y, -0.20, 1e-9);
   EXPECT_NEAR(joint(m, "right_wheel_joint")->parent_to_joint_origin_transform.position.z, 0.11, 1e-9);
