@@ -147,8 +147,8 @@ def p3at():
     s += diff_wheel("left", wheelbase / 2, track / 2, r, 0.09)
     s += diff_wheel("right", wheelbase / 2, -track / 2, r, 0.09)
     # Skid steer: each rear wheel turns with the front wheel of its side. A
-    # mimic joint would say so, but rviz 1.14's RobotModel crashes on it
-    # (segfault with the Roby bringup): fixed rear wheels, which look the same.
+    # mimic joint would say so, but with mimic joints rviz 1.14 segfaulted in
+    # the Roby bringup: fixed rear wheels, which look the same.
     for side, y in (("left", track / 2), ("right", -track / 2)):
         name = "rear_%s_wheel" % side
         s += link(name, visual(cylinder(r, 0.09), "wheel", rpy=(math.pi / 2, 0, 0)))
