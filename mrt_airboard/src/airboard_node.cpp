@@ -10,6 +10,7 @@
 #include <mrt_msgs/WheelState.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "mrt_airboard/board_session.h"
+#include "mrt_airboard/wheel_joints.h"
 #include "mrt_common/angle.h"
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
@@ -36,6 +38,7 @@ struct NodeOptions {
   std::string base_frame = "base_link";
   bool publish_tf = true;
   bool mirror_to_sim = false;
+  std::vector<std::string> joint_names;  // ~joint_names; empty: wheel_joint_names(base type)
   SessionOptions session;
 };
 
@@ -91,6 +94,7 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
       .get("base_frame", o.base_frame)
       .get("publish_tf", o.publish_tf)
       .get("mirror_to_sim", o.mirror_to_sim)
+      .get("joint_names", o.joint_names)
       .get("rate", s.rate)
       .get("cmd_timeout", s.cmd_timeout)
       .get("link_timeout", s.link_timeout)
@@ -105,6 +109,9 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
   p.get("gains/kp", s.kp).get("gains/ki", s.ki);
   s.base = load_base(p);
   s.brian = load_brian(p, s.base.type);
+  if (o.joint_names.empty()) o.joint_names = wheel_joint_names(s.base.type, s.base.wheel_count());
+  ParamReader::check(o.joint_names.size() == s.base.wheel_count(), "joint_names",
+                     "one joint name per wheel (" + std::to_string(s.base.wheel_count()) + ")");
   return o;  // BoardSession validates o.session
 }
 
@@ -119,6 +126,7 @@ class AirboardNode : public SessionListener {
     wheel_pub_ = nh.advertise<mrt_msgs::WheelState>("wheel_state", 10);
     odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     status_pub_ = nh.advertise<mrt_msgs::AirboardStatus>("airboard_status", 10);
+    joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
     if (o_.mirror_to_sim) sim_pub_ = nh.advertise<mrt_msgs::WheelCommand>("sim_wheel_cmd", 10);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &AirboardNode::on_cmd_vel, this);
     brian_sub_ = nh.subscribe("brian_commands", 10, &AirboardNode::on_brian, this);
@@ -189,6 +197,7 @@ class AirboardNode : public SessionListener {
       ws.status.push_back(m.status);
     }
     wheel_pub_.publish(ws);
+    publish_joint_states(ws);
     if (o_.mirror_to_sim) {
       // Coupling to mrt_sim: the emulated wheels' measured speeds drive the
       // simulated base (remap sim_wheel_cmd to /<robot>/wheel_cmd).
@@ -200,6 +209,17 @@ class AirboardNode : public SessionListener {
     }
     publish_odometry(stamp);
     publish_status(stamp, &s);
+  }
+
+  // The wheel joints of the robot description: angle from the encoder
+  // counts, velocity = measured wheel speed.
+  void publish_joint_states(const mrt_msgs::WheelState& ws) {
+    sensor_msgs::JointState j;
+    j.header.stamp = ws.header.stamp;
+    j.name = o_.joint_names;
+    j.velocity = ws.speed;
+    for (int64_t c : ws.ticks) j.position.push_back(counts_to_angle(c, o_.session.base.counts_per_rev));
+    joint_pub_.publish(j);
   }
 
   void publish_odometry(const ros::Time& stamp) {
@@ -320,7 +340,7 @@ class AirboardNode : public SessionListener {
   std::size_t n_;
   std::map<std::string, double> last_log_;  // throttle key -> wall time of the last message
 
-  ros::Publisher wheel_pub_, odom_pub_, status_pub_, sim_pub_;
+  ros::Publisher wheel_pub_, odom_pub_, status_pub_, sim_pub_, joint_pub_;
   ros::Subscriber cmd_sub_, brian_sub_, wheel_sub_;
   ros::Timer control_timer_, read_timer_, diag_timer_;
   diagnostic_updater::Updater diag_;

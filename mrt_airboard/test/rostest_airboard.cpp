@@ -1,6 +1,7 @@
 // rostests of airboard_node against airboard_emulator on a pseudo-terminal.
 // Each .test file starts both and selects one test with --gtest_filter.
 #include <gtest/gtest.h>
+#include <sensor_msgs/JointState.h>
 
 #include <cmath>
 #include <string>
@@ -68,6 +69,44 @@ TEST_F(Airboard, ConstantTwistDrawsTheCommandedArc) {
   EXPECT_NEAR(mvx * k, vx_, 0.01 * std::hypot(vx_, vy_));
   EXPECT_NEAR(mvy * k, vy_, 0.01 * std::hypot(vx_, vy_));
   EXPECT_NEAR(mw * k, omega_, 0.01 * std::fabs(omega_));
+}
+
+// joint_states for robot_state_publisher: the IANUS3's wheel joints, each
+// position 2 pi counts / 8192 of the wheel_state with the same stamp, and
+// over a straight drive the wheels turn by the odometry's distance over the
+// wheel radius 0.05 m (0.3 m/s for 3 s: about 0.9 m -> 18 rad).
+TEST_F(Airboard, JointStatesFollowTheEncoders) {
+  std::vector<sensor_msgs::JointState> joints;
+  ros::Subscriber sub = nh_.subscribe<sensor_msgs::JointState>(
+      "joint_states", 1000, [&](const sensor_msgs::JointState::ConstPtr& m) { joints.push_back(*m); });
+  ASSERT_TRUE(wait_for([&] { return !joints.empty(); }, 5.0)) << "no joint_states";
+  joints.clear();
+  wheels_.clear();
+  odom_.clear();
+  drive(3.0, 0.3, 0.0, 0.0);
+  ASSERT_GT(joints.size(), 50u);
+  const auto& first = joints.front();
+  const auto& last = joints.back();
+  EXPECT_EQ(last.name, (std::vector<std::string>{"left_wheel_joint", "right_wheel_joint"}));
+  ASSERT_EQ(last.position.size(), 2u);
+  ASSERT_EQ(last.velocity.size(), 2u);
+  std::size_t matched = 0;
+  for (const auto& w : wheels_)
+    for (const auto& j : joints)
+      if (j.header.stamp == w.header.stamp && j.position.size() == w.ticks.size()) {
+        for (std::size_t i = 0; i < w.ticks.size(); ++i) {
+          EXPECT_NEAR(j.position[i], 2.0 * M_PI * w.ticks[i] / 8192.0, 1e-9);
+          EXPECT_DOUBLE_EQ(j.velocity[i], w.speed[i]);
+        }
+        ++matched;
+        break;
+      }
+  EXPECT_GT(matched, 50u);
+  ASSERT_GT(odom_.size(), 2u);
+  const double d = std::hypot(odom_.back().pose.x - odom_.front().pose.x, odom_.back().pose.y - odom_.front().pose.y);
+  EXPECT_GT(d, 0.5);
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_NEAR(last.position[i] - first.position[i], d / 0.05, 0.02 * d / 0.05 + 0.05) << i;
 }
 
 // The emulator loses every PC -> board byte after 2 s (--cut-rx-after): the

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "mrt_airboard/kinematics.h"
+#include "mrt_airboard/wheel_joints.h"
 
 using namespace mrt::airboard;
 
@@ -190,4 +191,19 @@ TEST(BaseParams, ExtendsTheCommonBaseGeometry) {
   EXPECT_NEAR(w[2], 12.5, 1e-9);
   const std::vector<double> board = make_kinematics(p)->inverse({1.0, 0.0, 0.0});
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(board[i], w[i]);
+}
+
+// Joint states for the robot description. 8192 counts per revolution:
+// 2048 counts = a quarter turn = pi/2 = 1.570796 rad; -12288 counts = -1.5
+// turns = -9.424778 rad. Names in the motor (WheelState) order.
+TEST(WheelJoints, NamesAndCountAngles) {
+  using mrt::airboard::counts_to_angle;
+  using mrt::airboard::wheel_joint_names;
+  EXPECT_EQ(wheel_joint_names(mrt::common::BaseType::kDifferential, 2),
+            (std::vector<std::string>{"left_wheel_joint", "right_wheel_joint"}));
+  EXPECT_EQ(wheel_joint_names(mrt::common::BaseType::kOmni, 3),
+            (std::vector<std::string>{"wheel_0_joint", "wheel_1_joint", "wheel_2_joint"}));
+  EXPECT_NEAR(counts_to_angle(2048, 8192), 1.5707963267948966, 1e-12);
+  EXPECT_NEAR(counts_to_angle(-12288, 8192), -9.42477796076938, 1e-12);
+  EXPECT_EQ(counts_to_angle(0, 8192), 0.0);
 }

@@ -4,6 +4,7 @@
 // the name, the motor limit and the footprint the simulator needs.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,21 @@ inline Twist2D wheels_to_twist(const BaseGeometry& g, const std::vector<double>&
 /// applied (1 when nothing was saturated, or when max_wheel_speed <= 0).
 inline double saturate_wheels(const BaseConfig& g, std::vector<double>& wheel_speeds) {
   return mrt::common::saturate_preserving_direction(wheel_speeds, g.max_wheel_speed);
+}
+
+/// Wheel joint names of the robot description (mrt_description), in the
+/// order of the wheels (mrt_msgs/WheelState): differential
+/// [left_wheel_joint, right_wheel_joint]; omni wheel_<i>_joint.
+inline std::vector<std::string> wheel_joint_names(const BaseGeometry& g) {
+  if (g.type == BaseType::kDifferential) return {"left_wheel_joint", "right_wheel_joint"};
+  std::vector<std::string> n;
+  for (std::size_t i = 0; i < g.wheel_angles.size(); ++i) n.push_back("wheel_" + std::to_string(i) + "_joint");
+  return n;
+}
+
+/// Wheel angle (rad) of a cumulative encoder count: 2 pi ticks / ticks_per_rev.
+inline double ticks_to_angle(std::int64_t ticks, double ticks_per_rev) {
+  return 2.0 * mrt::common::kPi * static_cast<double>(ticks) / ticks_per_rev;
 }
 
 }  // namespace mrt::sim

@@ -69,6 +69,15 @@ mrt_msgs::WheelState to_wheel_state(const RobotState& r, bool watchdog, const ro
   return w;
 }
 
+sensor_msgs::JointState to_joint_state(const RobotState& r, const ros::Time& stamp) {
+  sensor_msgs::JointState j;
+  j.header.stamp = stamp;
+  j.name = wheel_joint_names(r.config.base);
+  j.velocity = r.wheel_speed;
+  for (std::int64_t t : r.ticks) j.position.push_back(ticks_to_angle(t, r.config.sensors.ticks_per_rev));
+  return j;
+}
+
 sensor_msgs::Range to_range(const SonarConfig& s, double range, const std::string& frame,
                             const ros::Time& stamp) {
   sensor_msgs::Range m;

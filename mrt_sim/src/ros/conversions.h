@@ -13,6 +13,7 @@
 #include <mrt_msgs/WheelState.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/time.h>
+#include <sensor_msgs/JointState.h>
 #include <sensor_msgs/NavSatFix.h>
 #include <sensor_msgs/Range.h>
 
@@ -48,6 +49,11 @@ mrt_msgs::MiceReading to_mice(const MiceSample& m, const RobotFrames& f, const r
 /// Wheel state; duty is the measured speed over the maximum wheel speed;
 /// status flags SATURATED and WATCHDOG apply to every wheel.
 mrt_msgs::WheelState to_wheel_state(const RobotState& r, bool watchdog, const ros::Time& stamp);
+
+/// The wheel joints of the robot description: names from
+/// wheel_joint_names, positions = encoder ticks as angles (rad), velocities =
+/// measured wheel speeds (rad/s).
+sensor_msgs::JointState to_joint_state(const RobotState& r, const ros::Time& stamp);
 
 sensor_msgs::Range to_range(const SonarConfig& s, double range, const std::string& frame,
                             const ros::Time& stamp);

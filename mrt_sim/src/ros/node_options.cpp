@@ -1,5 +1,6 @@
 #include "node_options.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -23,6 +24,14 @@ long NodeOptions::steps_per(double rate) const {
   return n < 1 ? 1 : n;
 }
 
+bool NodeOptions::joint_states_for(const std::string& robot) const {
+  return std::find(joint_state_robots.begin(), joint_state_robots.end(), robot) != joint_state_robots.end();
+}
+
+bool NodeOptions::described(const std::string& robot) const {
+  return std::find(description_robots.begin(), description_robots.end(), robot) != description_robots.end();
+}
+
 NodeOptions load_node_options(const ros::NodeHandle& pnh) {
   NodeOptions o;
   ParamReader p(pnh);
@@ -42,7 +51,9 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get_non_negative("cmd_timeout", o.cmd_timeout)  // 0 disables the watchdog
       .get("world_frame", o.world_frame)
       .get("frame_prefix", o.frame_prefix)
-      .get("sensor_parent", o.sensor_parent);
+      .get("sensor_parent", o.sensor_parent)
+      .get("joint_state_robots", o.joint_state_robots)
+      .get("description_robots", o.description_robots);
   ParamReader::check(!o.world_frame.empty() && valid_frame_name(o.world_frame), "world_frame",
                      "a non-empty frame name of [A-Za-z0-9_/]");
   ParamReader::check(valid_frame_name(o.frame_prefix), "frame_prefix", "characters of [A-Za-z0-9_/]");

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <ros/node_handle.h>
 
@@ -23,10 +24,14 @@ struct NodeOptions {
   std::string world_frame = "world";   // ~world_frame
   std::string frame_prefix;            // ~frame_prefix: prepended to every robot frame
   std::string sensor_parent = "base_link_truth";  // ~sensor_parent: parent of sensor frames
+  std::vector<std::string> joint_state_robots;   // ~joint_state_robots: publish <robot>/joint_states
+  std::vector<std::string> description_robots;   // ~description_robots: sensor frames from robot_description
 
   double dt() const { return 1.0 / rate_hz; }
   /// Steps between two publications at `rate` Hz (at least 1).
   long steps_per(double rate) const;
+  bool joint_states_for(const std::string& robot) const;
+  bool described(const std::string& robot) const;
 };
 
 /// Reads and validates the private parameters of `pnh` with

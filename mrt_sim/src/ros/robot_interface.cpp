@@ -8,6 +8,7 @@
 #include <mrt_msgs/WheelState.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
+#include <sensor_msgs/JointState.h>
 #include <sensor_msgs/NavSatFix.h>
 #include <sensor_msgs/Range.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -30,6 +31,7 @@ RobotInterface::RobotInterface(ros::NodeHandle& nh, Simulator& sim, std::size_t 
   ground_truth_pub_ = rnh.advertise<nav_msgs::Odometry>("ground_truth", 100);
   path_pub_ = rnh.advertise<nav_msgs::Path>("ground_truth_path", 1);
   wheel_state_pub_ = rnh.advertise<mrt_msgs::WheelState>("wheel_state", 50);
+  if (opt.joint_states_for(name_)) joint_state_pub_ = rnh.advertise<sensor_msgs::JointState>("joint_states", 50);
   const SensorsConfig& s = cfg.sensors;
   if (s.rate_mice > 0.0 && !s.mice.empty())
     mice_pub_ = rnh.advertise<mrt_msgs::MiceReading>("mice", 100);
@@ -135,6 +137,7 @@ void RobotInterface::publish(const ros::Time& stamp, bool ground_truth, bool pat
     mice_pub_.publish(to_mice(r.mice, frames_, stamp));
   }
   if (r.encoders_ready) wheel_state_pub_.publish(to_wheel_state(r, watchdog_, stamp));
+  if (r.encoders_ready && joint_state_pub_) joint_state_pub_.publish(to_joint_state(r, stamp));
   if (r.sonar_ready)
     for (std::size_t i = 0; i < sonar_pubs_.size() && i < r.sonar.size(); ++i)
       sonar_pubs_[i].publish(to_range(s.sonars[i], r.sonar[i], frames_.sonar(i), stamp));
@@ -147,6 +150,7 @@ void RobotInterface::publish(const ros::Time& stamp, bool ground_truth, bool pat
 }
 
 void RobotInterface::static_transforms(std::vector<geometry_msgs::TransformStamped>& out) const {
+  if (opt_.described(name_)) return;
   const SensorsConfig& s = state().config.sensors;
   const ros::Time stamp;
   for (std::size_t i = 0; i < s.sonars.size(); ++i)

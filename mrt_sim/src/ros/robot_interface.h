@@ -38,7 +38,8 @@ class RobotInterface {
                std::vector<geometry_msgs::TransformStamped>& tfs);
 
   /// Fixed transforms from the sensor parent frame to the sonar, mouse and
-  /// gps frames.
+  /// gps frames; none for a robot in ~description_robots (its
+  /// robot_state_publisher publishes them from the URDF).
   void static_transforms(std::vector<geometry_msgs::TransformStamped>& out) const;
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) const;
@@ -59,7 +60,7 @@ class RobotInterface {
 
   ros::Subscriber cmd_vel_sub_, wheel_cmd_sub_;
   ros::Publisher ground_truth_pub_, path_pub_, mice_pub_, wheel_state_pub_, percepts_pub_,
-      percept_markers_pub_, dgps_pub_;
+      percept_markers_pub_, dgps_pub_, joint_state_pub_;
   std::vector<ros::Publisher> sonar_pubs_;
 
   std::deque<geometry_msgs::PoseStamped> trail_;
