@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "mrt_airboard/board_session.h"
-#include "mrt_airboard/wheel_joints.h"
 #include "mrt_common/angle.h"
+#include "mrt_common/base_kinematics.h"
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 
@@ -109,7 +109,7 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
   p.get("gains/kp", s.kp).get("gains/ki", s.ki);
   s.base = load_base(p);
   s.brian = load_brian(p, s.base.type);
-  if (o.joint_names.empty()) o.joint_names = wheel_joint_names(s.base.type, s.base.wheel_count());
+  if (o.joint_names.empty()) o.joint_names = mrt::common::wheel_joint_names(s.base);
   ParamReader::check(o.joint_names.size() == s.base.wheel_count(), "joint_names",
                      "one joint name per wheel (" + std::to_string(s.base.wheel_count()) + ")");
   return o;  // BoardSession validates o.session
@@ -218,7 +218,7 @@ class AirboardNode : public SessionListener {
     j.header.stamp = ws.header.stamp;
     j.name = o_.joint_names;
     j.velocity = ws.speed;
-    for (int64_t c : ws.ticks) j.position.push_back(counts_to_angle(c, o_.session.base.counts_per_rev));
+    for (int64_t c : ws.ticks) j.position.push_back(mrt::common::encoder_angle(c, o_.session.base.counts_per_rev));
     joint_pub_.publish(j);
   }
 

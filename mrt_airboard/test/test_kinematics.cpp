@@ -4,7 +4,6 @@
 #include <random>
 
 #include "mrt_airboard/kinematics.h"
-#include "mrt_airboard/wheel_joints.h"
 
 using namespace mrt::airboard;
 
@@ -197,13 +196,15 @@ TEST(BaseParams, ExtendsTheCommonBaseGeometry) {
 // 2048 counts = a quarter turn = pi/2 = 1.570796 rad; -12288 counts = -1.5
 // turns = -9.424778 rad. Names in the motor (WheelState) order.
 TEST(WheelJoints, NamesAndCountAngles) {
-  using mrt::airboard::counts_to_angle;
-  using mrt::airboard::wheel_joint_names;
-  EXPECT_EQ(wheel_joint_names(mrt::common::BaseType::kDifferential, 2),
-            (std::vector<std::string>{"left_wheel_joint", "right_wheel_joint"}));
-  EXPECT_EQ(wheel_joint_names(mrt::common::BaseType::kOmni, 3),
-            (std::vector<std::string>{"wheel_0_joint", "wheel_1_joint", "wheel_2_joint"}));
-  EXPECT_NEAR(counts_to_angle(2048, 8192), 1.5707963267948966, 1e-12);
-  EXPECT_NEAR(counts_to_angle(-12288, 8192), -9.42477796076938, 1e-12);
-  EXPECT_EQ(counts_to_angle(0, 8192), 0.0);
+  using mrt::common::encoder_angle;
+  using mrt::common::wheel_joint_names;
+  mrt::common::BaseGeometry diff;
+  mrt::common::BaseGeometry omni;
+  omni.type = mrt::common::BaseType::kOmni;
+  omni.wheel_angles = {0.0, 2.0, 4.0};
+  EXPECT_EQ(wheel_joint_names(diff), (std::vector<std::string>{"left_wheel_joint", "right_wheel_joint"}));
+  EXPECT_EQ(wheel_joint_names(omni), (std::vector<std::string>{"wheel_0_joint", "wheel_1_joint", "wheel_2_joint"}));
+  EXPECT_NEAR(encoder_angle(2048, 8192), 1.5707963267948966, 1e-12);
+  EXPECT_NEAR(encoder_angle(-12288, 8192), -9.42477796076938, 1e-12);
+  EXPECT_EQ(encoder_angle(0, 8192), 0.0);
 }

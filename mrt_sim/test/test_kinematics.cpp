@@ -177,12 +177,12 @@ TEST(Kinematics, BaseConfigExtendsTheCommonBaseGeometry) {
 // revolution: 500 ticks = a quarter turn = pi/2 = 1.570796 rad; -3000 ticks
 // = -1.5 turns = -9.424778 rad.
 TEST(Kinematics, WheelJointNamesAndTickAngles) {
-  EXPECT_EQ(wheel_joint_names(base_preset("p3at")),
+  EXPECT_EQ(mrt::common::wheel_joint_names(base_preset("p3at")),
             (std::vector<std::string>{"left_wheel_joint", "right_wheel_joint"}));
-  EXPECT_EQ(wheel_joint_names(base_preset("triskar")),
+  EXPECT_EQ(mrt::common::wheel_joint_names(base_preset("triskar")),
             (std::vector<std::string>{"wheel_0_joint", "wheel_1_joint", "wheel_2_joint"}));
-  EXPECT_EQ(wheel_joint_names(base_preset("omni4")).size(), 4u);
-  EXPECT_NEAR(ticks_to_angle(500, 2000), 1.5707963267948966, 1e-12);
-  EXPECT_NEAR(ticks_to_angle(-3000, 2000), -9.42477796076938, 1e-12);
-  EXPECT_EQ(ticks_to_angle(0, 2000), 0.0);
+  EXPECT_EQ(mrt::common::wheel_joint_names(base_preset("omni4")).size(), 4u);
+  EXPECT_NEAR(mrt::common::encoder_angle(500, 2000), 1.5707963267948966, 1e-12);
+  EXPECT_NEAR(mrt::common::encoder_angle(-3000, 2000), -9.42477796076938, 1e-12);
+  EXPECT_EQ(mrt::common::encoder_angle(0, 2000), 0.0);
 }

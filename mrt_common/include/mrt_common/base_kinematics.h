@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -234,6 +235,21 @@ inline const BasePreset& base_preset(const std::string& name) {
     names += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i].name;
   }
   throw std::invalid_argument("unknown base preset '" + name + "' (expected " + names + ")");
+}
+
+/// Joint names of the wheels in the robot descriptions (mrt_description), in
+/// the wheel order of mrt_msgs/WheelState: [left_wheel_joint,
+/// right_wheel_joint] on a differential base, wheel_<i>_joint otherwise.
+inline std::vector<std::string> wheel_joint_names(const BaseGeometry& g) {
+  if (g.type == BaseType::kDifferential) return {"left_wheel_joint", "right_wheel_joint"};
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < g.wheel_count(); ++i) names.push_back("wheel_" + std::to_string(i) + "_joint");
+  return names;
+}
+
+/// Wheel angle (rad) of a cumulative encoder count: 2 pi counts / counts_per_rev.
+inline double encoder_angle(std::int64_t counts, double counts_per_rev) {
+  return 2.0 * kPi * static_cast<double>(counts) / counts_per_rev;
 }
 
 }  // namespace mrt::common

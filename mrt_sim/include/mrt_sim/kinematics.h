@@ -56,19 +56,4 @@ inline double saturate_wheels(const BaseConfig& g, std::vector<double>& wheel_sp
   return mrt::common::saturate_preserving_direction(wheel_speeds, g.max_wheel_speed);
 }
 
-/// Wheel joint names of the robot description (mrt_description), in the
-/// order of the wheels (mrt_msgs/WheelState): differential
-/// [left_wheel_joint, right_wheel_joint]; omni wheel_<i>_joint.
-inline std::vector<std::string> wheel_joint_names(const BaseGeometry& g) {
-  if (g.type == BaseType::kDifferential) return {"left_wheel_joint", "right_wheel_joint"};
-  std::vector<std::string> n;
-  for (std::size_t i = 0; i < g.wheel_angles.size(); ++i) n.push_back("wheel_" + std::to_string(i) + "_joint");
-  return n;
-}
-
-/// Wheel angle (rad) of a cumulative encoder count: 2 pi ticks / ticks_per_rev.
-inline double ticks_to_angle(std::int64_t ticks, double ticks_per_rev) {
-  return 2.0 * mrt::common::kPi * static_cast<double>(ticks) / ticks_per_rev;
-}
-
 }  // namespace mrt::sim

@@ -72,9 +72,9 @@ mrt_msgs::WheelState to_wheel_state(const RobotState& r, bool watchdog, const ro
 sensor_msgs::JointState to_joint_state(const RobotState& r, const ros::Time& stamp) {
   sensor_msgs::JointState j;
   j.header.stamp = stamp;
-  j.name = wheel_joint_names(r.config.base);
+  j.name = mrt::common::wheel_joint_names(r.config.base);
   j.velocity = r.wheel_speed;
-  for (std::int64_t t : r.ticks) j.position.push_back(ticks_to_angle(t, r.config.sensors.ticks_per_rev));
+  for (std::int64_t t : r.ticks) j.position.push_back(mrt::common::encoder_angle(t, r.config.sensors.ticks_per_rev));
   return j;
 }
 
