@@ -53,6 +53,30 @@ mrt::mice::CalibrationRun run_from_bag(const std::string& path, bool push, doubl
                                                   (topic.empty() ? std::string() : " on '" + topic + "'"));
   return run;
 }
+
+// Prints the estimated geometry, mouse placements and residuals.
+void print_result(const mrt::mice::CalibrationResult& res) {
+  using mrt::common::rad_to_deg;
+  const auto& g = res.geometry;
+  std::cout << std::fixed << std::setprecision(4) << "runs: " << res.pushes << " pushes, "
+            << res.turns << " turns\n"
+            << "D: " << g.D * 1000.0 << " mm\n"
+            << "sigma_l: " << rad_to_deg(g.sigma_l) << " deg\n"
+            << "sigma_r: " << rad_to_deg(g.sigma_r) << " deg\n"
+            << "delta: " << rad_to_deg(g.delta) << " deg\n"
+            << "left: x " << res.params.left.mount.x * 1000.0 << " mm, y "
+            << res.params.left.mount.y * 1000.0 << " mm, " << res.params.left.counts_per_m
+            << " counts/m\n"
+            << "right: x " << res.params.right.mount.x * 1000.0 << " mm, y "
+            << res.params.right.mount.y * 1000.0 << " mm, " << res.params.right.counts_per_m
+            << " counts/m\n";
+  for (const auto& r : res.residuals)
+    std::cout << "residual " << r.source << " "
+              << (r.kind == mrt::mice::CalibrationRun::Kind::kPush ? "push" : "turn")
+              << ": left " << r.left << " counts, right " << r.right << " counts\n";
+  std::cout << "rms residual: " << res.rms_residual << " counts\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,7 +108,6 @@ int main(int argc, char** argv) {
     std::cerr << "mice_calibrate: give the runs with --in or --push-bag/--turn-bag\n";
     return 2;
   }
-  using mrt::common::rad_to_deg;
   try {
     mrt::mice::MiceParams base;
     if (!base_path.empty()) base = mrt::mice::load_params(base_path);
@@ -113,24 +136,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     mrt::mice::write_params(out, res.params, &res);
-    const auto& g = res.geometry;
-    std::cout << std::fixed << std::setprecision(4) << "runs: " << res.pushes << " pushes, "
-              << res.turns << " turns\n"
-              << "D: " << g.D * 1000.0 << " mm\n"
-              << "sigma_l: " << rad_to_deg(g.sigma_l) << " deg\n"
-              << "sigma_r: " << rad_to_deg(g.sigma_r) << " deg\n"
-              << "delta: " << rad_to_deg(g.delta) << " deg\n"
-              << "left: x " << res.params.left.mount.x * 1000.0 << " mm, y "
-              << res.params.left.mount.y * 1000.0 << " mm, " << res.params.left.counts_per_m
-              << " counts/m\n"
-              << "right: x " << res.params.right.mount.x * 1000.0 << " mm, y "
-              << res.params.right.mount.y * 1000.0 << " mm, " << res.params.right.counts_per_m
-              << " counts/m\n";
-    for (const auto& r : res.residuals)
-      std::cout << "residual " << r.source << " "
-                << (r.kind == mrt::mice::CalibrationRun::Kind::kPush ? "push" : "turn")
-                << ": left " << r.left << " counts, right " << r.right << " counts\n";
-    std::cout << "rms residual: " << res.rms_residual << " counts\n";
+    print_result(res);
   } catch (const mrt::common::ParseError& e) {
     std::cerr << e.what() << "\n";
     return 2;

@@ -87,26 +87,11 @@ const double kMaxXy = 0.3, kMaxTheta = mrt::common::deg_to_rad(10);  // issue 15
 
 }  // namespace
 
-TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
-  ros::NodeHandle nh;
-  Recorder rec;
-  ros::Subscriber st = nh.subscribe("/robot1/ground_truth", 200, &Recorder::on_truth, &rec);
-  ros::Subscriber sp = nh.subscribe("/robot1/pose", 50, &Recorder::on_pose, &rec);
-  ros::Subscriber sd = nh.subscribe("/diagnostics", 10, &Recorder::on_diag, &rec);
-  tf2_ros::Buffer tf_buffer;
-  tf2_ros::TransformListener tf_listener(tf_buffer);
+namespace {
 
-  // 1. No prior: the first pose is the global search's, within 0.3 m / 10 deg.
-  ASSERT_TRUE(mrt::ros_common::wait_for([&] { return !rec.poses.empty() && !rec.truth.empty(); }, 20.0))
-      << "no /robot1/pose within 20 s";
-  mrt::ros_common::spin_for(0.3);
+// 2. Tracking while the robot drives: every pose within the bounds.
+void check_tracking(Recorder& rec) {
   double d = 0, a = 0;
-  ASSERT_TRUE(error_of(rec, rec.poses.front(), &d, &a));
-  EXPECT_LT(d, kMaxXy);
-  EXPECT_LT(a, kMaxTheta);
-
-  // 2. Tracking while the robot drives the figure eight (0.6 m/s) for 8 s
-  // of wall time: ~10 poses per second, every one within 0.3 m / 10 deg.
   const std::size_t start = rec.poses.size();
   mrt::ros_common::spin_for(8.0);
   ASSERT_GT(rec.poses.size(), start + 40) << "fewer than 5 poses per second";
@@ -127,14 +112,11 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   std::printf("tracking: %zu poses, %d compared, RMSE %.3f m, worst %.3f m, %.2f deg\n", rec.poses.size() - start, checked, std::sqrt(sum_d2 / checked),
               worst_d, worst_a * 180 / M_PI);
 
-  // 3. REP-105: map -> robot1/odom -> robot1/base_link agrees with the pose.
-  geometry_msgs::TransformStamped tf;
-  ASSERT_NO_THROW(tf = tf_buffer.lookupTransform("map", "robot1/base_link", ros::Time(0), ros::Duration(1.0)));
-  const auto tt = rec.truth_at(tf.header.stamp);
-  if (tt) {
-    EXPECT_LT(std::hypot(tf.transform.translation.x - tt->x, tf.transform.translation.y - tt->y), kMaxXy);
-  }
+}
 
+// 4.-5. global_localization and relocalize.
+void check_global_localization(Recorder& rec) {
+  double d = 0, a = 0;
   // 4. global_localization: the pose is forgotten; the next poses come
   // from a global search once it is unambiguous (a coloured goal or corner
   // post in view: the field is symmetric otherwise), and are right again.
@@ -154,6 +136,10 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   EXPECT_TRUE(trig.response.success) << trig.response.message;
   std::printf("relocalize: %s\n", trig.response.message.c_str());
 
+}
+
+// 6. initialpose and the evidence markers.
+void check_initialpose(ros::NodeHandle& nh, Recorder& rec) {
   // 6. initialpose: set 0.15 m and 5 degrees off the truth, the next
   // tracked poses are back within 0.3 m / 10 deg; the evidence markers
   // carry the tied cells (the plateau) as points.
@@ -173,6 +159,10 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   EXPECT_LT(rec.errors.back().first, kMaxXy);
   EXPECT_LT(rec.errors.back().second, kMaxTheta);
 
+}
+
+// 7. Bad percepts dropped and counted.
+void check_bad_percepts(ros::NodeHandle& nh, Recorder& rec) {
   // 7. Bad percepts are dropped and counted: two objects in a frame the
   // node cannot transform, one object with a nan distance.
   ros::Publisher bad = nh.advertise<mrt_msgs::Percept>("/robot1/percepts", 5);
@@ -200,6 +190,46 @@ TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
   EXPECT_TRUE(mrt::ros_common::wait_for(
       [&] { return count("dropped: unknown frame") == 2 && count("dropped: non-finite") == 1; }, 4.0))
       << rec.diag;
+}
+
+}  // namespace
+
+TEST(MureaSim, LocalizesFollowsAndRelocalizes) {
+  ros::NodeHandle nh;
+  Recorder rec;
+  ros::Subscriber st = nh.subscribe("/robot1/ground_truth", 200, &Recorder::on_truth, &rec);
+  ros::Subscriber sp = nh.subscribe("/robot1/pose", 50, &Recorder::on_pose, &rec);
+  ros::Subscriber sd = nh.subscribe("/diagnostics", 10, &Recorder::on_diag, &rec);
+  tf2_ros::Buffer tf_buffer;
+  tf2_ros::TransformListener tf_listener(tf_buffer);
+
+  // 1. No prior: the first pose is the global search's, within 0.3 m / 10 deg.
+  ASSERT_TRUE(mrt::ros_common::wait_for([&] { return !rec.poses.empty() && !rec.truth.empty(); }, 20.0))
+      << "no /robot1/pose within 20 s";
+  mrt::ros_common::spin_for(0.3);
+  double d = 0, a = 0;
+  ASSERT_TRUE(error_of(rec, rec.poses.front(), &d, &a));
+  EXPECT_LT(d, kMaxXy);
+  EXPECT_LT(a, kMaxTheta);
+
+  // 2. Tracking while the robot drives the figure eight (0.6 m/s) for 8 s
+  // of wall time: ~10 poses per second, every one within 0.3 m / 10 deg.
+  check_tracking(rec);
+  if (HasFatalFailure()) return;
+
+  // 3. REP-105: map -> robot1/odom -> robot1/base_link agrees with the pose.
+  geometry_msgs::TransformStamped tf;
+  ASSERT_NO_THROW(tf = tf_buffer.lookupTransform("map", "robot1/base_link", ros::Time(0), ros::Duration(1.0)));
+  const auto tt = rec.truth_at(tf.header.stamp);
+  if (tt) {
+    EXPECT_LT(std::hypot(tf.transform.translation.x - tt->x, tf.transform.translation.y - tt->y), kMaxXy);
+  }
+
+  check_global_localization(rec);
+  if (HasFatalFailure()) return;
+  check_initialpose(nh, rec);
+  if (HasFatalFailure()) return;
+  check_bad_percepts(nh, rec);
   // Update times the node reports (diagnostics, last 1000 tracked frames).
   std::printf("node diagnostics: %s\n", rec.diag.c_str());
 }
