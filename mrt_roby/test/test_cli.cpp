@@ -4,42 +4,15 @@
 // nothing on stdout. Expected values follow from the tools' contract
 // (README, "Command-line tool"): help 0, usage error 2.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <string>
 
-namespace {
+#include "mrt_common/testing/cli_runner.h"
 
-struct Output {
-  int code = -1;
-  std::string text;
-};
-
-// Runs `cmd` through the shell; `text` is what it wrote on the stream left
-// on the pipe (the command's own redirections pick stdout or stderr).
-Output run(const std::string& cmd) {
-  Output o;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return o;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), p)) > 0;) o.text.append(buf.data(), n);
-  const int status = pclose(p);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
-
-Output help(const std::string& tool) { return run("'" + tool + "' --help 2>/dev/null"); }
-// stderr only; stdout must stay empty on a usage error, so it is checked apart.
-Output err(const std::string& tool, const std::string& args) {
-  return run("'" + tool + "' " + args + " 2>&1 >/dev/null");
-}
-std::string out(const std::string& tool, const std::string& args) {
-  return run("'" + tool + "' " + args + " 2>/dev/null").text;
-}
-
-}  // namespace
+using mrt::common::testing::err;
+using mrt::common::testing::help;
+using mrt::common::testing::out;
+using mrt::common::testing::Output;
 
 TEST(RobyRunCli, HelpExitsZeroAndListsEveryOption) {
   const Output o = help(ROBY_RUN);
