@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "mrt_airboard/protocol.h"
+#include "mrt_common/cli.h"
 
 using namespace mrt::airboard;
 
@@ -186,17 +187,7 @@ int main(int argc, char** argv) {
   CLI::App* dec = app.add_subcommand("decode", "print the frames of a capture and the decoder's counters");
   dec->add_flag("--binary", binary, "FILE holds raw bytes (default: hex bytes, whitespace separated, # comments)");
   dec->add_option("file", file, "capture file; '-' or none = stdin");
-  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
-    const auto extra = app.remaining(true);
-    std::cerr << "airboard_frame: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
-              << "\nRun with --help for more information.\n";
-    return 2;
-  }
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
     if (enc->parsed()) return encode(type, seq, args);
     return decode(binary, file);

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "mrt_brian/checker.h"
+#include "mrt_common/cli.h"
 
 int main(int argc, char** argv) {
   std::string path;
@@ -17,17 +18,7 @@ int main(int argc, char** argv) {
                "`file:line: message`; exit 0 when clean, 1 when anything is reported, 2 on usage errors.",
                "brian_check"};
   app.add_option("config", path, "configuration directory or its BrianConfigs.ini")->required();
-  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
-    const auto extra = app.remaining(true);
-    std::cerr << "brian_check: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
-              << "\nRun with --help for more information.\n";
-    return 2;
-  }
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     std::fprintf(stderr, "brian_check: %s: %s\n", path.c_str(),
