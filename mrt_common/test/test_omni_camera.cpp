@@ -70,3 +70,37 @@ TEST(OmniCamera, PixelGroundRoundTripWithTilt) {
   ASSERT_TRUE(cam.project(Eigen::Vector3d(0.0, 2.0, 0.05), u, v));
   EXPECT_FALSE(cam.pixel_to_ground(u, v, gx, gy));
 }
+
+// ---- YAML form (omni_camera_yaml.h) ----
+#include "mrt_common/omni_camera_yaml.h"
+
+namespace {
+OmniCamera read_cam(const std::string& text) {
+  mrt::common::YamlReader r("cam.yaml");
+  return mrt::common::read_omni_camera(r, r.load(text)["camera"]);
+}
+}  // namespace
+
+TEST(OmniCameraYaml, ReadsTheIsometricBlock) {
+  const auto cam = read_cam(
+      "camera:\n  width: 320\n  height: 240\n  viewpoint_height: 0.6\n"
+      "  mirror: {type: isometric, metres_per_px: 0.02, inner_range: 2.0, px_per_rad: 50, theta_max: 1.7}\n");
+  EXPECT_EQ(cam.width, 320);
+  EXPECT_DOUBLE_EQ(cam.cx, 160.0);  // default: image centre
+  // 1 m at 2 cm/px -> 50 px
+  EXPECT_NEAR(cam.profile.radius(std::atan2(1.0, 0.6)), 50.0, 0.01);
+}
+
+TEST(OmniCameraYaml, ErrorsNameFileAndLine) {
+  try {
+    read_cam("camera:\n  viewpoint_height: 0.6\n  mirror:\n    type: parabolic\n");
+    FAIL() << "expected a ParseError";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("cam.yaml:4:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("hyperbolic, isometric or table"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_cam("camera:\n  mirror: {type: table, samples: [[0, 0], [0.5, 3], [0.4, 9]]}\n"),
+               mrt::common::ParseError);
+  EXPECT_THROW(read_cam("camera:\n  focal: 3\n  mirror: {type: hyperbolic, gamma: 1, xi: 1, theta_max: 1}\n"),
+               mrt::common::ParseError);
+}
