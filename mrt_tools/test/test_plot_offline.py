@@ -9,12 +9,15 @@ import sys
 import tempfile
 import unittest
 
+import genmsg
+import genmsg.gentools
+import genmsg.msg_loader
+import genpy.dynamic
 import rosbag
+import rospkg
 import rospy
 import rostest
-from geometry_msgs.msg import Twist
 from mrt_msgs.msg import BrianBehavior, BrianIntrospection
-from nav_msgs.msg import Odometry
 from std_msgs.msg import String
 
 from mrt_tools import bag_data, plots
@@ -24,6 +27,21 @@ from mrt_tools.world import WorldError, load_world
 HERE = os.path.dirname(os.path.realpath(__file__))
 SCRIPT = os.path.join(HERE, "..", "scripts", "plot_run")
 T0 = 100.0  # first receive time of the synthetic bag (s)
+
+
+def message_class(name):
+    """A message class generated from the .msg files: Debian's ROS ships no
+    Python modules for geometry_msgs and nav_msgs, only their definitions."""
+    rp = rospkg.RosPack()
+    search = {p: [os.path.join(rp.get_path(p), "msg")] for p in ("std_msgs", "geometry_msgs", "nav_msgs")}
+    ctx = genmsg.MsgContext.create_default()
+    spec = genmsg.msg_loader.load_msg_by_type(ctx, name, search)
+    genmsg.msg_loader.load_depends(ctx, spec, search)
+    return genpy.dynamic.generate_dynamic(name, genmsg.gentools.compute_full_text(ctx, spec))[name]
+
+
+Odometry = message_class("nav_msgs/Odometry")
+Twist = message_class("geometry_msgs/Twist")
 
 
 def odom(stamp, x, y, yaw):

@@ -6,11 +6,14 @@ import argparse
 import os
 import sys
 
-import matplotlib.pyplot as plt
 import rosbag
 
-from mrt_tools import bag_data, plots
+from mrt_tools import bag_data
 from mrt_tools.world import WorldError, load_world
+
+# The figures, in the order they are written (plots.FIGURES; matplotlib is
+# imported only once the command line is good, so --help answers at once).
+FIGURE_NAMES = ["trajectory", "errors", "commands", "wheels", "behaviours", "timing_periods", "timing_latency"]
 
 
 def parse_args(argv):
@@ -26,7 +29,7 @@ def parse_args(argv):
                    "then '_', e.g. demo_trajectory.png)")
     p.add_argument("-w", "--world", help="mrt_sim world YAML whose walls, field lines and posts are "
                    "drawn under the trajectories")
-    p.add_argument("--only", action="append", choices=[name for name, _ in plots.FIGURES],
+    p.add_argument("--only", action="append", choices=FIGURE_NAMES,
                    help="write only this figure (repeatable)")
     p.add_argument("--dpi", type=int, default=100, help="resolution of the PNGs (default: 100)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress and no list of files")
@@ -38,6 +41,9 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
+    import matplotlib.pyplot as plt
+    from mrt_tools import plots
+    assert [name for name, _ in plots.FIGURES] == FIGURE_NAMES
     world = None
     if args.world:
         try:
