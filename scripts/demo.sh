@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # README command 1: installs what is missing, builds, runs the demo headless
 # (under Xvfb unless --gui is given and a display exists), saves an rviz
-# screenshot to build/demo/rviz.png and a bag to build/demo/demo.bag, and
-# prints a summary.
+# screenshot to build/demo/rviz.png and a bag to build/demo/demo.bag, draws
+# the run's plots next to them (build/demo/demo_*.png, mrt_tools' plot_run),
+# and prints a summary.
 #   ./scripts/demo.sh [--gui] [NAME]    NAME: a launch file in launch/ (default: roby;
 #                                       "demo" is the figure eight on the MSL field)
 #   DURATION=<s>  simulated seconds to record at most (default: 200 for roby,
@@ -31,7 +32,7 @@ set +u; source "$ROOT/devel/setup.bash"; set -u
 
 OUT="$ROOT/build/demo"
 mkdir -p "$OUT" "$ROS_LOG_DIR"
-rm -f "$OUT/demo.bag" "$OUT/rviz.png"
+rm -f "$OUT/demo.bag" "$OUT/rviz.png" "$OUT"/demo_*.png
 export ROS_MASTER_URI="http://127.0.0.1:$(free_port)"
 
 pids=()
@@ -102,6 +103,13 @@ fi
 [ -s "$OUT/demo.bag" ] || { echo "demo: no bag was recorded; see $OUT/rosbag.log" >&2; exit 1; }
 
 /usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall"
+
+# The plots of the run, over the launch file's world (its `world` argument).
+world=$(sed -n 's|.*<arg name="world" default="\$(dirname)/\.\./\([^"]*\)".*|\1|p' "$LAUNCH" | head -n 1)
+world_args=()
+[ -n "$world" ] && [ -f "$ROOT/$world" ] && world_args=(--world "$ROOT/$world")
+/usr/bin/python3 "$ROOT/scripts/plot_run.py" "$OUT/demo.bag" "${world_args[@]}" ||
+  { echo "demo: plot_run could not draw the run's plots" >&2; exit 1; }
 echo "demo: screenshot $OUT/rviz.png ($colours colours)"
 echo "demo: bag        $OUT/demo.bag"
 echo "demo: done in ${SECONDS} s"

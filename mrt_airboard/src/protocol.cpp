@@ -6,29 +6,16 @@
 #include <limits>
 #include <stdexcept>
 
+#include <boost/crc.hpp>
+
 namespace mrt::airboard {
 
-namespace {
-// Table of the CRC of each byte value, for one-table-lookup-per-byte CRC;
-// identical to the bit-by-bit algorithm of the README.
-struct CrcTable {
-  uint16_t t[256];
-  CrcTable() {
-    for (int v = 0; v < 256; ++v) {
-      uint16_t c = static_cast<uint16_t>(v << 8);
-      for (int b = 0; b < 8; ++b)
-        c = (c & 0x8000) ? static_cast<uint16_t>((c << 1) ^ 0x1021) : static_cast<uint16_t>(c << 1);
-      t[v] = c;
-    }
-  }
-};
-const CrcTable kCrcTable;
-}  // namespace
-
 uint16_t crc16_ccitt(const uint8_t* data, std::size_t n, uint16_t crc) {
-  for (std::size_t i = 0; i < n; ++i)
-    crc = static_cast<uint16_t>((crc << 8) ^ kCrcTable.t[((crc >> 8) ^ data[i]) & 0xFF]);
-  return crc;
+  // CRC-16/CCITT-FALSE: polynomial 0x1021, MSB first, no final XOR, so the
+  // running value is also the remainder a chained call starts from.
+  boost::crc_optimal<16, 0x1021, 0xFFFF, 0, false, false> c(crc);
+  c.process_bytes(data, n);
+  return c.checksum();
 }
 
 void append_frame(std::vector<uint8_t>& out, const Frame& f) {

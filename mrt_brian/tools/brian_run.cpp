@@ -15,6 +15,7 @@
 #include "mrt_brian/brian.h"
 #include "mrt_brian/crisp_input.h"
 #include "mrt_brian/lexer.h"
+#include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
 
 namespace {
@@ -69,23 +70,15 @@ int main(int argc, char** argv) {
   app.add_option("config", config, "configuration directory or its BrianConfigs.ini")->required();
   app.add_option("input", input, "crisp input file (one block of NAME VALUE [RELIABILITY] per cycle)")
       ->required();
-  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
-  try {
-    app.parse(argc, argv);
+  if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
+  try {  // the names given to --profile/--weight/--float/--defuzz: usage errors too
     if (!profile.empty()) opt.profile = parse_profile(profile);
     if (!weight.empty()) opt.weight_composer = parse_weight_composer(weight);
     if (!floating.empty()) opt.float_composer = parse_float_composer(floating);
     if (!defuzz.empty()) opt.defuzzification = parse_defuzz_method(defuzz);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
-    const auto extra = app.remaining(true);
-    std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n",
-                 extra.empty() ? e.what() : CLI::ExtrasError(extra).what());
-    return 2;
-  } catch (const std::exception& e) {  // CLI::ParseError or a bad --profile/--weight/... name
+  } catch (const std::exception& e) {
     std::fprintf(stderr, "brian_run: %s\nRun with --help for more information.\n", e.what());
-    return 2;
+    return mrt::cli::kUsageError;
   }
   try {
     auto brian = Brian::from_path(config, opt);

@@ -3,10 +3,9 @@
 // rest) and stream channels (serial lines, Finder connections). The links
 // themselves are in stream_link.cpp and udp_link.cpp. See README "Wire protocol".
 #include <arpa/inet.h>
-#include <fcntl.h>
-#include <termios.h>
 #include <unistd.h>
 
+#include "mrt_common/serial_port.h"
 #include "mrt_dcdt/channel.h"
 #include "stream_link.h"
 #include "udp_link.h"
@@ -114,20 +113,23 @@ class StreamChannel : public Channel {
   std::unique_ptr<StreamLink> stream_;
 };
 
+// The stack's serial port (shared with the AIRBoard driver), opened
+// blocking at 115200 8N1 and handed to the stream link, which owns the
+// descriptor from then on. A device that is not a terminal is used as it is;
+// -1 when it cannot be opened (the link retries).
 int open_serial(const std::string& dev) {
-  int fd = ::open(dev.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-  if (fd < 0) return -1;
-  if (::isatty(fd)) {
-    termios t{};
-    if (tcgetattr(fd, &t) == 0) {
-      cfmakeraw(&t);
-      cfsetispeed(&t, B115200);
-      cfsetospeed(&t, B115200);
-      t.c_cflag |= CLOCAL | CREAD;
-      tcsetattr(fd, TCSANOW, &t);
-    }
+  mrt::common::SerialOptions o;
+  o.baud = 115200;
+  o.non_blocking = false;
+  o.require_tty = false;
+  o.flush_input = false;
+  try {
+    mrt::common::SerialPort port;
+    port.open(dev, o);
+    return port.release();
+  } catch (const mrt::common::SerialError&) {
+    return -1;
   }
-  return fd;
 }
 
 }  // namespace

@@ -1,21 +1,12 @@
 #include "mrt_dcdt/frame.h"
 
-#include <array>
 #include <cstring>
+
+#include <boost/crc.hpp>
 
 namespace mrt::dcdt {
 
 namespace {
-
-std::array<uint32_t, 256> make_crc_table() {
-  std::array<uint32_t, 256> t{};
-  for (uint32_t i = 0; i < 256; ++i) {
-    uint32_t c = i;
-    for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    t[i] = c;
-  }
-  return t;
-}
 
 void put8(std::vector<uint8_t>& b, uint8_t v) { b.push_back(v); }
 void put32(std::vector<uint8_t>& b, uint32_t v) {
@@ -54,10 +45,9 @@ bool header_ok(const uint8_t* p) {
 }  // namespace
 
 uint32_t crc32_ieee(const uint8_t* data, size_t n) {
-  static const auto table = make_crc_table();
-  uint32_t c = 0xFFFFFFFFu;
-  for (size_t i = 0; i < n; ++i) c = table[(c ^ data[i]) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
+  boost::crc_32_type c;  // CRC-32/IEEE 802.3, as zlib's crc32 and Ethernet
+  c.process_bytes(data, n);
+  return c.checksum();
 }
 
 std::vector<uint8_t> encode_msg(const Msg& m, uint64_t link_seq) {

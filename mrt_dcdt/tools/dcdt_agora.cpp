@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_dcdt/agora.h"
 #include "mrt_dcdt/xml_message.h"
@@ -224,26 +225,16 @@ void add_options(CLI::App& app, Options& o, RawOptions& r) {
 // Parses the command line into o: returns -1 to go on, else the exit code.
 int parse_args(int argc, char** argv, Options& o) {
   // roslaunch appends __name:= and __log:= arguments, which CLI11 cannot be
-  // told to skip: they are dropped here (CLI11 takes the vector reversed).
-  std::vector<std::string> args;
-  for (int i = argc - 1; i >= 1; --i)
-    if (std::string(argv[i]).rfind("__", 0) != 0) args.emplace_back(argv[i]);
+  // told to skip: they are dropped here.
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i)
+    if (i == 0 || std::string(argv[i]).rfind("__", 0) != 0) args.push_back(argv[i]);
   CLI::App app{"A legacy-style Agora built only on the DCDT library: publishes and subscribes test\n"
                "messages from the command line or from XML files.",
                "dcdt_agora"};
   RawOptions r;
   add_options(app, o, r);
-  // The stack's CLI11 exit codes (the rule of mrt_common/cli.h's parse_cli, written out here because the tool also maps its own name errors to 2).
-  try {
-    app.parse(args);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {  // unknown arguments first, as parse_cli does
-    const auto extra = app.remaining(true);
-    std::cerr << "dcdt_agora: " << (extra.empty() ? e.what() : CLI::ExtrasError(extra).what())
-              << "\nRun with --help for more information.\n";
-    return 2;
-  }
+  if (const int rc = mrt::cli::parse_cli(app, static_cast<int>(args.size()), args.data()); rc >= 0) return rc;
   if (!r.check_xml.empty()) return answer_at_once("--check-xml", r.check_xml);
   if (!r.check_config.empty()) return answer_at_once("--check-config", r.check_config);
   if (!r.publish.empty()) o.publish_type = ParseType(r.publish);

@@ -1,8 +1,8 @@
 #include "mrt_mice/evdev_mouse.h"
 
 #include <fcntl.h>
+#include <libevdev/libevdev.h>
 #include <linux/input.h>
-#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -49,12 +49,15 @@ bool EvdevMouse::open() {
     return false;
   }
   grabbed_ = false;
+  const int rc = libevdev_new_from_fd(fd, &dev_);
+  if (rc < 0) dev_ = nullptr;  // not an evdev device: read as input_event records
   if (grab_) {
     // Exclusive access: the events no longer reach the desktop cursor.
-    if (::ioctl(fd, EVIOCGRAB, 1) == 0)
+    const int g = dev_ ? libevdev_grab(dev_, LIBEVDEV_GRAB) : -ENOTTY;
+    if (g == 0)
       grabbed_ = true;
     else
-      error_ = path_ + ": cannot grab: " + std::strerror(errno);
+      error_ = path_ + ": cannot grab: " + std::strerror(-g);
   }
   fd_ = fd;
   ++connects_;
@@ -63,7 +66,11 @@ bool EvdevMouse::open() {
 
 void EvdevMouse::close() {
   if (fd_ < 0) return;
-  if (grabbed_) ::ioctl(fd_, EVIOCGRAB, 0);
+  if (dev_) {
+    if (grabbed_) libevdev_grab(dev_, LIBEVDEV_UNGRAB);
+    libevdev_free(dev_);
+    dev_ = nullptr;
+  }
   ::close(fd_);
   fd_ = -1;
   grabbed_ = false;
@@ -71,6 +78,37 @@ void EvdevMouse::close() {
 
 bool EvdevMouse::poll(EvdevAccumulator& acc) {
   if (fd_ < 0) return false;
+  return dev_ ? poll_libevdev(acc) : poll_raw(acc);
+}
+
+bool EvdevMouse::poll_libevdev(EvdevAccumulator& acc) {
+  input_event ev{};
+  while (true) {
+    int rc = libevdev_next_event(dev_, LIBEVDEV_READ_FLAG_NORMAL, &ev);
+    if (rc == LIBEVDEV_READ_STATUS_SUCCESS) {
+      acc.feed(ev.type, ev.code, ev.value);
+      continue;
+    }
+    if (rc == LIBEVDEV_READ_STATUS_SYNC) {
+      // SYN_DROPPED: libevdev has drained the kernel's queue and hands out
+      // the device's state as sync events (keys, absolute axes: no motion).
+      // The cut report is discarded, and the drained queue ends it.
+      acc.feed(EV_SYN, SYN_DROPPED, 0);
+      do rc = libevdev_next_event(dev_, LIBEVDEV_READ_FLAG_SYNC, &ev);
+      while (rc == LIBEVDEV_READ_STATUS_SYNC);
+      acc.feed(EV_SYN, SYN_REPORT, 0);
+      continue;
+    }
+    if (rc == -EAGAIN) return true;
+    if (rc == -EINTR) continue;
+    // -ENODEV (unplugged) or another read error: the device is gone.
+    error_ = path_ + ": " + std::strerror(-rc);
+    close();
+    return false;
+  }
+}
+
+bool EvdevMouse::poll_raw(EvdevAccumulator& acc) {
   input_event ev[64];
   while (true) {
     const ssize_t n = ::read(fd_, ev, sizeof ev);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Core>
+
 namespace mrt::mice {
 
 void OdometryOptions::validate() const {
@@ -79,14 +81,11 @@ void MiceOdometry::grow_covariance(const Pose2D& delta, const Detection& d) {
   const double th = integrator_.pose().theta;
   const double c = std::cos(th), s = std::sin(th);
   const double wx = c * delta.x - s * delta.y, wy = s * delta.x + c * delta.y;
-  const double F[9] = {1, 0, -wy, 0, 1, wx, 0, 0, 1};
-  double FP[9] = {0}, P2[9] = {0};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) FP[i * 3 + j] += F[i * 3 + k] * cov_[k * 3 + j];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) P2[i * 3 + j] += FP[i * 3 + k] * F[j * 3 + k];
+  Eigen::Matrix3d F;
+  F << 1, 0, -wy, 0, 1, wx, 0, 0, 1;
+  Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> P(cov_.data());
+  const Eigen::Matrix3d FP = F * P;
+  Eigen::Matrix3d P2 = FP * F.transpose();
   const double ds = std::hypot(delta.x, delta.y);
   double q_xy = options_.var_xy_per_m * ds;
   double q_th = options_.var_theta_per_rad * std::fabs(delta.theta) + options_.var_theta_per_m * ds;
@@ -96,10 +95,8 @@ void MiceOdometry::grow_covariance(const Pose2D& delta, const Detection& d) {
     const double gt = g / params_.distance();
     q_th += gt * gt;
   }
-  P2[0] += q_xy;
-  P2[4] += q_xy;
-  P2[8] += q_th;
-  for (int i = 0; i < 9; ++i) cov_[i] = P2[i];
+  P2.diagonal() += Eigen::Vector3d(q_xy, q_xy, q_th);
+  P = P2;
 }
 
 }  // namespace mrt::mice

@@ -1,48 +1,18 @@
-// Raw serial port (a real /dev/ttyUSB*, /dev/ttyS* or a pseudo-terminal).
-// ROS-free, non-blocking, no hidden threads.
+// Raw serial port (a real /dev/ttyUSB*, /dev/ttyS* or a pseudo-terminal):
+// mrt_common's SerialPort, non-blocking, no hidden threads; and the
+// reconnection back-off of the driver. ROS-free.
 #pragma once
 
 #include <algorithm>
-#include <cstddef>
-#include <cstdint>
-#include <stdexcept>
-#include <string>
+
+#include "mrt_common/serial_port.h"
 
 namespace mrt::airboard {
 
-class SerialError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-class SerialPort {
- public:
-  SerialPort() = default;
-  ~SerialPort();
-  SerialPort(const SerialPort&) = delete;
-  SerialPort& operator=(const SerialPort&) = delete;
-
-  /// Opens `path` raw 8N1, no flow control, at `baud` (one of the standard
-  /// rates up to 921600), non-blocking, and flushes stale input. Throws
-  /// SerialError with the path and errno text.
-  void open(const std::string& path, int baud);
-  void close();
-  bool is_open() const { return fd_ >= 0; }
-  int fd() const { return fd_; }
-
-  /// Reads what is available (0 when nothing). Throws SerialError when the
-  /// device has gone (EIO, hang-up), after closing it.
-  std::size_t read(uint8_t* buf, std::size_t cap);
-  /// Waits up to `timeout_ms` for input; true when readable.
-  bool wait_readable(int timeout_ms);
-  /// Writes all bytes (waiting briefly if the driver's buffer is full).
-  /// Throws SerialError when the device has gone, after closing it.
-  void write(const uint8_t* data, std::size_t n);
-
- private:
-  int fd_ = -1;
-  std::string path_;
-};
+// The port itself is the stack's one serial abstraction, shared with DCDT's
+// serial links: mrt_common/serial_port.h.
+using SerialError = mrt::common::SerialError;
+using SerialPort = mrt::common::SerialPort;
 
 /// Exponential back-off between reconnection attempts.
 class Backoff {

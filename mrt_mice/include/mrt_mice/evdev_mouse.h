@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+struct libevdev;
+
 namespace mrt::mice {
 
 /// Turns a stream of evdev events into counts in the mouse frame of
@@ -32,7 +34,11 @@ class EvdevAccumulator {
 };
 
 /// One evdev device: open (non-blocking), grab, read what is available,
-/// close on unplug (ENODEV, EOF) and reopen on request.
+/// close on unplug (ENODEV, EOF) and reopen on request. A real evdev device
+/// is handled by libevdev (grab, event reading, the resynchronisation after
+/// SYN_DROPPED); a file libevdev refuses because it is no evdev device (a
+/// FIFO standing in for one in the tests: libevdev queries the device's
+/// capabilities with ioctls) is read as struct input_event records.
 class EvdevMouse {
  public:
   EvdevMouse(std::string path, bool grab) : path_(std::move(path)), grab_(grab) {}
@@ -52,12 +58,18 @@ class EvdevMouse {
   bool poll(EvdevAccumulator& acc);
   const std::string& last_error() const { return error_; }
   bool grabbed() const { return grabbed_; }
+  /// True while the open device is read through libevdev.
+  bool uses_libevdev() const { return dev_ != nullptr; }
   std::uint64_t connects() const { return connects_; }
 
  private:
+  bool poll_libevdev(EvdevAccumulator& acc);
+  bool poll_raw(EvdevAccumulator& acc);
+
   std::string path_;
   bool grab_;
   int fd_ = -1;
+  ::libevdev* dev_ = nullptr;
   bool grabbed_ = false;
   std::string error_;
   std::uint64_t connects_ = 0;
