@@ -4,8 +4,9 @@
 // with its own 5 cm noise. The ball and the needs drift smoothly; robots
 // drive to their roles' targets. Measured: cycles in which two robots hold
 // the same exclusive role (role max 1), re-assignments per robot per 10 s,
-// and, after a robot drops out, cycles until the survivors agree and every
-// schema one of them holds is covered.
+// and, after a robot drops out, cycles from the first survivor dropping it
+// until every survivor holds a slot, no slot is over-full and every schema
+// one of them holds is covered.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,7 +19,8 @@ namespace mrt::scare::bench {
 
 namespace {
 
-constexpr double kDt = 0.01, kPeriod = 0.1;
+constexpr double kDt = 0.001, kPeriod = 0.1;
+constexpr long kTicks = 100;  // ticks of kDt per cycle
 
 struct Pending {
   double at;
@@ -30,7 +32,7 @@ struct Game {
   const ActivitySet& set;
   std::vector<Coordinator> c;
   std::vector<Pose2D> pose;
-  std::vector<double> phase;
+  std::vector<long> phase;  // ticks
   std::vector<bool> alive;
   std::vector<Pending> queue;
   std::mt19937 rng{9};
@@ -42,7 +44,7 @@ struct Game {
     for (int r = 0; r < 5; ++r) {
       c.emplace_back(s, s.robot_or_default("robot" + std::to_string(r)));
       pose.emplace_back(-6.0 + 3.0 * r, r % 2 ? 2.0 : -2.0, 0.0);
-      phase.push_back(0.017 * r);
+      phase.push_back(17 * r);
       alive.push_back(true);
     }
   }
@@ -104,34 +106,31 @@ struct Game {
   }
 
   /// Runs [t0, t1); robot cycles at their phases.
-  void run(double t0, double t1, const std::function<void(double)>& after_tick = {}) {
-    for (double t = t0; t < t1 - 1e-9; t += kDt) {
+  void run(long k0, long k1, const std::function<void(double)>& after_tick = {}) {
+    for (long k = k0; k < k1; ++k) {
+      const double t = kDt * static_cast<double>(k);
       deliver(t);
-      for (int r = 0; r < 5; ++r) {
-        const double ph = std::fmod(t - phase[static_cast<std::size_t>(r)] + 10 * kPeriod, kPeriod);
-        if (alive[static_cast<std::size_t>(r)] && ph < kDt - 1e-9) cycle(r, t);
-      }
+      for (int r = 0; r < 5; ++r)
+        if (alive[static_cast<std::size_t>(r)] && (k - phase[static_cast<std::size_t>(r)]) % kTicks == 0) cycle(r, t);
       if (after_tick) after_tick(t);
     }
   }
 
-  /// Survivors agree on the allocation and every schema they hold is covered.
-  bool settled() const {
-    const Coordinator* ref = nullptr;
+  /// Every survivor holds a slot, no slot holds more robots than its role
+  /// allows, and every schema a survivor holds has all its roles filled.
+  bool covered() const {
     std::vector<int> held(set.slots().size(), 0);
     for (std::size_t r = 0; r < c.size(); ++r) {
       if (!alive[r]) continue;
-      if (ref && (c[r].last().slot != ref->last().slot || c[r].team_size() != ref->team_size())) return false;
-      ref = &c[r];
       if (c[r].own_slot() < 0) return false;
       ++held[static_cast<std::size_t>(c[r].own_slot())];
     }
     const auto slots = set.slots();
     for (std::size_t s = 0; s < slots.size(); ++s) {
-      const ActivitySpec& a = set.activities[static_cast<std::size_t>(slots[s].activity)];
+      const RoleSpec& role = set.activities[static_cast<std::size_t>(slots[s].activity)].roles[static_cast<std::size_t>(slots[s].role)];
       int total = 0;
       for (std::size_t k = 0; k < slots.size(); ++k) total += slots[k].activity == slots[s].activity ? held[k] : 0;
-      if (total > 0 && held[s] < a.roles[static_cast<std::size_t>(slots[s].role)].min) return false;
+      if (held[s] > role.max || (total > 0 && held[s] < role.min)) return false;
     }
     return true;
   }
@@ -142,7 +141,7 @@ struct Game {
 void run_game(const ActivitySet& set) {
   const double duration = 600.0;  // s of game
   Game g(set);
-  g.run(0.0, duration);
+  g.run(0, static_cast<long>(duration / kDt));
   std::printf("coordination_game_cycles_checked: %zu count\n", g.checks);
   std::printf("coordination_game_consistent_cycles: %.3f %%\n", 100.0 * (1.0 - double(g.conflicts) / double(g.checks)));
   std::printf("coordination_game_reassignments_per_robot_per_10s: %.3f count\n", g.changes / 5.0 / (duration / 10.0));
@@ -153,20 +152,20 @@ void run_game(const ActivitySet& set) {
   for (int trial = 0; trial < 50; ++trial) {
     Game d(set);
     d.rng.seed(100 + trial);
-    d.run(0.0, 20.0 + 0.37 * trial);
+    const long k_stop = 20000 + 370 * trial;
+    d.run(0, k_stop);
     int victim = 4;
     for (int r = 0; r < 5; ++r)
       if (d.c[r].own_slot() >= 0 &&
           set.activities[static_cast<std::size_t>(set.slots()[static_cast<std::size_t>(d.c[r].own_slot())].activity)].schema)
         victim = r;
     d.alive[static_cast<std::size_t>(victim)] = false;
-    const double t_stop = 20.0 + 0.37 * trial;
     double detected = -1.0, restored = -1.0;
-    d.run(t_stop, t_stop + 3.0, [&](double t) {
-      bool all = true;
-      for (int r = 0; r < 5; ++r) all = all && (!d.alive[static_cast<std::size_t>(r)] || d.c[r].team_size() == 4);
-      if (all && detected < 0) detected = t;
-      if (detected >= 0 && restored < 0 && d.settled()) restored = t;
+    d.run(k_stop, k_stop + 3000, [&](double t) {
+      bool any = false;  // the first survivor that drops the silent robot
+      for (int r = 0; r < 5; ++r) any = any || (d.alive[static_cast<std::size_t>(r)] && d.c[r].team_size() == 4);
+      if (any && detected < 0) detected = t;
+      if (detected >= 0 && restored < 0 && d.covered()) restored = t;
     });
     if (restored < 0) {
       ++failed;

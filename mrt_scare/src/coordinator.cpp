@@ -47,6 +47,7 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
   m.robot_id = self_.id;
   m.seq = ++seq_;
   m.stamp = now;
+  if (started_ < 0.0) started_ = now;
   m.x = pose.x;
   m.y = pose.y;
   m.intention = own_slot_;
@@ -112,8 +113,10 @@ Allocation Coordinator::step(double now) {
   // Release before acquire: a slot still claimed by as many teammates as its
   // role holds is taken only once they have announced they left it; until
   // then this robot holds nothing (so that swaps cannot deadlock).
-  waiting_ = false;
-  if (want >= 0 && want != own_slot_) {
+  // A robot that has just started listens first: what it has not yet heard
+  // of its teammates could make it take a slot one of them holds.
+  waiting_ = want >= 0 && (started_ < 0.0 || now - started_ < options_.listen);
+  if (!waiting_ && want >= 0 && want != own_slot_) {
     const Slot& sl = slots_[static_cast<std::size_t>(want)];
     int claims = 0;
     for (const auto& [id, m] : team_) claims += id != self_.id && m.intention == want;

@@ -23,9 +23,11 @@ CrispMap passing() {
 struct Team {
   std::vector<Coordinator> c;
   std::vector<Pose2D> pose{{0.0, 1.0, 0}, {1.0, 0.5, 0}, {2.5, -2.0, 0}};
-  Team() {
+  explicit Team(double listen = 0.0) {
     const ActivitySet s = robocup();
-    for (const char* id : {"robot1", "robot2", "robot3"}) c.emplace_back(s, s.robot_or_default(id));
+    CoordinatorOptions o;
+    o.listen = listen;
+    for (const char* id : {"robot1", "robot2", "robot3"}) c.emplace_back(s, s.robot_or_default(id), o);
   }
   /// One cycle at time t: everyone publishes, `alive` robots' messages reach the others, all step.
   void cycle(double t, const std::vector<bool>& alive, const CrispMap& crisp) {
@@ -73,6 +75,22 @@ TEST(Coordinator, ThreeRobotsAgreeAndCoverThePassage) {
   EXPECT_EQ(crisp["ScareMate_receiver_X"], 2.5);
   EXPECT_EQ(crisp["ScareMate_receiver_Y"], -2.0);
   EXPECT_EQ(crisp["ScareTeamSize"], 3.0);
+}
+
+TEST(Coordinator, StartingRobotListensBeforeTakingASlot) {
+  Team t(0.5);  // the default: listen 0.5 s from the first message
+  const std::vector<bool> all{true, true, true};
+  for (int k = 0; k < 4; ++k) {
+    t.cycle(0.125 * k, all, passing());
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_TRUE(t.c[i].waiting());
+      EXPECT_EQ(t.c[i].own_slot(), -1);
+    }
+  }
+  t.cycle(0.5, all, passing());
+  EXPECT_EQ(t.job(0), "Defense");
+  EXPECT_EQ(t.job(1), "PassageToMate.passer");
+  EXPECT_EQ(t.job(2), "PassageToMate.receiver");
 }
 
 TEST(Coordinator, DropOutReassignedInTheCycleItIsDetected) {

@@ -56,6 +56,7 @@ struct CoordinatorOptions {
   double grace = 0.5;           // s of age with no penalty
   double drop_timeout = 1.0;    // s of silence after which a teammate is dropped
   double min_confidence = 0.5;  // confidence just before the drop
+  double listen = 0.5;          // s a (re)starting robot only listens before taking a slot
 };
 
 /// The age penalty: 1 up to `grace`, then linear down to `min_confidence`
@@ -115,6 +116,7 @@ class Coordinator {
   std::uint32_t seq_ = 0;
   int own_slot_ = -1;
   bool waiting_ = false;
+  double started_ = -1.0;  // time of the first publish
   std::size_t drops_ = 0;
   Allocation last_;
 };

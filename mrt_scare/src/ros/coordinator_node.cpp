@@ -31,7 +31,7 @@ struct CoordinatorNodeOptions {
   double rate = 10.0;               // ~rate, Hz
   std::string frame = "world";      // ~frame of the poses and targets
   std::string team_topic = "/scare/team";
-  CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence
+  CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence, ~listen
 
   static CoordinatorNodeOptions read(ros_common::ParamReader& p) {
     CoordinatorNodeOptions o;
@@ -42,7 +42,8 @@ struct CoordinatorNodeOptions {
         .get("team_topic", o.team_topic)
         .get_non_negative("grace", o.coordination.grace)
         .get_positive("drop_timeout", o.coordination.drop_timeout)
-        .get_positive("min_confidence", o.coordination.min_confidence);
+        .get_positive("min_confidence", o.coordination.min_confidence)
+        .get_non_negative("listen", o.coordination.listen);
     p.check(!o.robot_id.empty(), "robot_id", "a non-empty string");
     p.check(o.rate <= 1000, "rate", "a number in (0, 1000]");
     p.check(o.coordination.grace < o.coordination.drop_timeout, "grace", "a number < ~drop_timeout");
