@@ -118,14 +118,15 @@ struct Exhaustive {
 void utility_figures(const ActivitySet& set, int n) {
   const Allocator al(set);
   std::mt19937 rng(1);
-  double sum_opt = 0, sum_exact = 0, sum_local = 0, sum_greedy = 0, t_alloc = 0, t_max = 0, t_exh = 0;
+  double sum_opt = 0, sum_exact = 0, sum_local = 0, sum_greedy = 0, t_alloc = 0, t_exh = 0;
+  std::vector<double> times;
   for (int k = 0; k < n; ++k) {
     const TeamInput in = team_input(set, random_situation(rng));
     auto t0 = Clock::now();
     const double exact = al.allocate(in).utility;  // kAuto: exact for 5 robots
     const double dt = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     t_alloc += dt;
-    t_max = std::max(t_max, dt);
+    times.push_back(dt);
     sum_exact += exact;
     sum_local += al.allocate(in, Allocator::Method::kGreedyLocal).utility;
     sum_greedy += al.allocate(in, Allocator::Method::kGreedy).utility;
@@ -136,7 +137,9 @@ void utility_figures(const ActivitySet& set, int n) {
     sum_opt += ex.best;
   }
   std::printf("coordination_allocation_cycle_mean: %.3f ms\n", t_alloc / n);
-  std::printf("coordination_allocation_cycle_max: %.3f ms\n", t_max);
+  std::sort(times.begin(), times.end());
+  std::printf("coordination_allocation_cycle_median: %.3f ms\n", times[times.size() / 2]);
+  std::printf("coordination_allocation_cycle_p99: %.3f ms\n", times[times.size() * 99 / 100]);
   std::printf("coordination_exhaustive_search_mean: %.3f ms\n", t_exh / n);
   std::printf("coordination_allocation_over_exhaustive_time: %.3f ratio\n", t_alloc / t_exh);
   std::printf("coordination_utility_exact_vs_optimum: %.2f %%\n", 100.0 * sum_exact / sum_opt);

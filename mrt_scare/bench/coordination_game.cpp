@@ -147,8 +147,8 @@ void run_game(const ActivitySet& set) {
   std::printf("coordination_game_reassignments_per_robot_per_10s: %.3f count\n", g.changes / 5.0 / (duration / 10.0));
   // Drop-outs: 50 trials, each from a game settled for 20 s; the robot
   // holding a schema role if any, else robot4, falls silent.
-  int worst = 0, failed = 0;
-  double sum = 0.0;
+  int worst = 0, worst_all = 0, failed = 0;
+  double sum = 0.0, sum_all = 0.0;
   for (int trial = 0; trial < 50; ++trial) {
     Game d(set);
     d.rng.seed(100 + trial);
@@ -160,11 +160,16 @@ void run_game(const ActivitySet& set) {
           set.activities[static_cast<std::size_t>(set.slots()[static_cast<std::size_t>(d.c[r].own_slot())].activity)].schema)
         victim = r;
     d.alive[static_cast<std::size_t>(victim)] = false;
-    double detected = -1.0, restored = -1.0;
+    double detected = -1.0, all_detected = -1.0, restored = -1.0;
     d.run(k_stop, k_stop + 3000, [&](double t) {
-      bool any = false;  // the first survivor that drops the silent robot
-      for (int r = 0; r < 5; ++r) any = any || (d.alive[static_cast<std::size_t>(r)] && d.c[r].team_size() == 4);
+      bool any = false, all = true;  // the first / every survivor dropped the silent robot
+      for (int r = 0; r < 5; ++r) {
+        if (!d.alive[static_cast<std::size_t>(r)]) continue;
+        any = any || d.c[r].team_size() == 4;
+        all = all && d.c[r].team_size() == 4;
+      }
       if (any && detected < 0) detected = t;
+      if (all && all_detected < 0) all_detected = t;
       if (detected >= 0 && restored < 0 && d.covered()) restored = t;
     });
     if (restored < 0) {
@@ -172,11 +177,16 @@ void run_game(const ActivitySet& set) {
       continue;
     }
     const int cycles = static_cast<int>(std::ceil((restored - detected) / kPeriod - 1e-9));
+    const int cycles_all = static_cast<int>(std::ceil(std::max(0.0, restored - all_detected) / kPeriod - 1e-9));
     worst = std::max(worst, cycles);
     sum += cycles;
+    worst_all = std::max(worst_all, cycles_all);
+    sum_all += cycles_all;
   }
   std::printf("coordination_dropout_restore_cycles_mean: %.2f cycles\n", sum / std::max(1, 50 - failed));
   std::printf("coordination_dropout_restore_cycles_max: %d cycles\n", worst);
+  std::printf("coordination_dropout_restore_after_all_detected_mean: %.2f cycles\n", sum_all / std::max(1, 50 - failed));
+  std::printf("coordination_dropout_restore_after_all_detected_max: %d cycles\n", worst_all);
   std::printf("coordination_dropout_not_restored_in_3s: %d count\n", failed);
 }
 
