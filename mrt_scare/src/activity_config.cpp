@@ -2,12 +2,15 @@
 #include <sstream>
 
 #include "mrt_scare/activity.h"
+#include "fuzzy_yaml.h"
 #include "yaml_util.h"
 
 namespace mrt::scare {
 
 using common::ParseError;
 using detail::YamlReader;
+using detail::origin;
+using detail::parse_fuzzy;
 
 std::vector<Slot> ActivitySet::slots() const {
   std::vector<Slot> out;
@@ -65,26 +68,6 @@ RobotSpec ActivitySet::robot_or_default(const std::string& id) const {
 }
 
 namespace {
-
-/// Where a scalar's text starts: a block scalar (| or >) on the next line.
-TextOrigin origin(const YAML::Node& n, const std::string& file, const std::string& text) {
-  TextOrigin o{file, n.Mark().line + 1, n.Mark().column + 1};
-  std::istringstream in(text);
-  std::string line, next;
-  for (int i = 0; i <= n.Mark().line && std::getline(in, line); ++i) {
-  }
-  const auto col = static_cast<std::size_t>(n.Mark().column);
-  if (col < line.size() && (line[col] == '|' || line[col] == '>')) {
-    std::getline(in, next);
-    o.indent = static_cast<int>(next.find_first_not_of(' '));
-    if (o.indent < 0) o.indent = 0;
-    o.line += 1;
-    o.column = o.indent + 1;
-  } else if (col < line.size() && (line[col] == '"' || line[col] == '\'')) {
-    o.column += 1;
-  }
-  return o;
-}
 
 Target parse_target(const YamlReader& y, const YAML::Node& n) {
   Target t;
@@ -183,13 +166,7 @@ ActivitySet parse_activities(const std::string& text, const std::string& file) {
   const YAML::Node root = y.load(text);
   y.map(root, "activity file", {"fuzzy", "activities", "robots", "default_attitude", "options"});
   ActivitySet set;
-  const YAML::Node fz = y.required(root, "fuzzy", "activity file");
-  y.map(fz, "fuzzy", {"shapes", "data", "predicates"});
-  const YAML::Node sh = y.required(fz, "shapes", "fuzzy"), da = y.required(fz, "data", "fuzzy");
-  const YAML::Node pr = fz["predicates"];
-  set.model = std::make_shared<FuzzyModel>(y.string(sh, "shapes"), origin(sh, file, text), y.string(da, "data"),
-                                           origin(da, file, text), pr ? y.string(pr, "predicates") : "",
-                                           pr ? origin(pr, file, text) : TextOrigin{file, 1, 1});
+  set.model = parse_fuzzy(y, y.required(root, "fuzzy", "activity file"), text);
   std::set<std::string> names;
   const YAML::Node acts = y.required(root, "activities", "activity file");
   for (const YAML::Node& a : y.sequence(acts, "activities")) {
