@@ -143,30 +143,43 @@ std::vector<int> Allocator::greedy(const Tables& t, const std::vector<AgendaEntr
 
 void Allocator::improve(const Tables& t, std::vector<int>& slot) const {
   auto u = [&](int i, int s) { return s < 0 ? 0.0 : t.u[static_cast<std::size_t>(i)][static_cast<std::size_t>(s)]; };
-  // First-improvement local search over moves (one robot to another slot or
-  // out) and swaps (two robots exchange slots), at most 4 n^2 accepted moves.
-  const int bound = 4 * t.n * t.n;
-  for (int moves = 0; moves < bound;) {
-    bool improved = false;
-    for (int i = 0; i < t.n && !improved; ++i) {
+  auto ok = [&](int i, int s) { return s < 0 || u(i, s) > kNone; };
+  // First-improvement local search, at most 4 n^2 accepted moves: one robot
+  // to another slot (or none), then two robots to any two slots at once
+  // (swaps, ejections, and both roles of a two-role schema).
+  const int bound = 4 * t.n * t.n, ns = slot_count();
+  auto single = [&]() {
+    for (int i = 0; i < t.n; ++i) {
       const int old = slot[static_cast<std::size_t>(i)];
-      for (int s = -1; s < slot_count() && !improved; ++s) {
-        if (s == old || (s >= 0 && u(i, s) == kNone) || !(u(i, s) > u(i, old) + 1e-12)) continue;
+      for (int s = -1; s < ns; ++s) {
+        if (s == old || !ok(i, s) || !(u(i, s) > u(i, old) + 1e-12)) continue;
         slot[static_cast<std::size_t>(i)] = s;
-        improved = feasible(slot, t.on_agenda);
-        if (!improved) slot[static_cast<std::size_t>(i)] = old;
-      }
-      for (int j = i + 1; j < t.n && !improved; ++j) {
-        const int a = slot[static_cast<std::size_t>(i)], b = slot[static_cast<std::size_t>(j)];
-        if (a == b || (b >= 0 && u(i, b) == kNone) || (a >= 0 && u(j, a) == kNone)) continue;
-        if (!(u(i, b) + u(j, a) > u(i, a) + u(j, b) + 1e-12)) continue;
-        std::swap(slot[static_cast<std::size_t>(i)], slot[static_cast<std::size_t>(j)]);
-        improved = feasible(slot, t.on_agenda);
-        if (!improved) std::swap(slot[static_cast<std::size_t>(i)], slot[static_cast<std::size_t>(j)]);
+        if (feasible(slot, t.on_agenda)) return true;
+        slot[static_cast<std::size_t>(i)] = old;
       }
     }
-    if (!improved) break;
-    ++moves;
+    return false;
+  };
+  auto pair = [&]() {
+    for (int i = 0; i < t.n; ++i)
+      for (int j = i + 1; j < t.n; ++j) {
+        const int a = slot[static_cast<std::size_t>(i)], b = slot[static_cast<std::size_t>(j)];
+        const double now = u(i, a) + u(j, b);
+        for (int s = -1; s < ns; ++s) {
+          if (!ok(i, s)) continue;
+          for (int r = -1; r < ns; ++r) {
+            if ((s == a && r == b) || !ok(j, r) || !(u(i, s) + u(j, r) > now + 1e-12)) continue;
+            slot[static_cast<std::size_t>(i)] = s;
+            slot[static_cast<std::size_t>(j)] = r;
+            if (feasible(slot, t.on_agenda)) return true;
+            slot[static_cast<std::size_t>(i)] = a;
+            slot[static_cast<std::size_t>(j)] = b;
+          }
+        }
+      }
+    return false;
+  };
+  for (int moves = 0; moves < bound && (single() || pair()); ++moves) {
   }
 }
 
