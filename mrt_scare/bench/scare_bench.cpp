@@ -1,13 +1,19 @@
-// scare_bench: sequencer update cost, printed as
-// `name: value unit`, with an in-run baseline ratio (scripts/bench.sh).
+// scare_bench: sequencer update cost and the coordination figures
+// (bench/coordination_bench.cpp), printed as `name: value unit`, with
+// in-run baseline ratios (scripts/bench.sh). `scare_bench --quick` runs
+// the coordination part on 500 situations / cycles.
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+
+#include "coordination_bench.h"
 
 #include "mrt_scare/sequencer.h"
 
 using Clock = std::chrono::steady_clock;
 
-int main() {
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   using namespace mrt::scare;
   // Sequencer: a 1000-point plan driven through by a pose on the points.
   std::vector<Point2D> plan;
@@ -30,5 +36,6 @@ int main() {
   std::printf("sequencer_update: %.1f ns\n", seq_ns);
   std::printf("sequencer_update_over_distance_baseline: %.1f ratio\n", seq_ns / base_ns);
   std::printf("sequencer_events: %zu count\n", events + (acc < 0 ? 1 : 0));
+  mrt::scare::bench::run_coordination(quick ? 500 : 10000, quick ? 500 : 10000);
   return 0;
 }

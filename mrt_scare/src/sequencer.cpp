@@ -80,7 +80,7 @@ std::vector<SequencerEvent> Sequencer::update(double now, const Pose2D& pose) {
   }
   // Several path points can be reached in one update (they may lie close).
   while (state_ == SequencerState::kRunning && task_) {
-    const TaskState s = task_->update(now, pose);
+    const TaskState s = task_->update(now, pose, &world_);
     const std::size_t i = task_->index();
     const double el = task_->elapsed(now), to = task_->timeout();
     if (s == TaskState::kSucceeded) {

@@ -1,5 +1,7 @@
 #include "mrt_scare/task.h"
 
+#include "mrt_scare/sequencer.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -68,9 +70,21 @@ double Task::elapsed(double now) const {
   return std::max(0.0, end - start_time_ - paused_);
 }
 
-TaskState Task::update(double now, const Pose2D& pose) {
+bool FuzzyCondition::holds(const TaskContext& c) const {
+  CrispMap data = c.world ? *c.world : CrispMap{};
+  const GoalCrisp g = goal_crisp(c.pose, c.goal);
+  data["GoalDistance"] = {g.distance_cm, 1.0};
+  data["GoalBearing"] = {g.bearing_deg, 1.0};
+  data["StartDistance"] = {c.start_distance * 100.0, 1.0};
+  data["TaskElapsed"] = {c.elapsed, 1.0};
+  model_->evaluate(data);
+  return model_->degree(expression_) >= threshold_;
+}
+
+TaskState Task::update(double now, const Pose2D& pose, const CrispMap* world) {
   if (state_ != TaskState::kActive) return state_;
   TaskContext c;
+  c.world = world;
   c.now = now;
   c.elapsed = elapsed(now);
   c.pose = pose;

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "fuzzy_yaml.h"
 #include "yaml_util.h"
 
 namespace mrt::scare {
@@ -10,9 +11,22 @@ namespace {
 
 using detail::YamlReader;
 
+/// The task file's `fuzzy:` section, for `predicate` conditions.
+struct Fuzzy {
+  std::shared_ptr<FuzzyModel> model;
+  const std::string* text = nullptr;
+};
+
 std::shared_ptr<const Condition> parse_condition(const YamlReader& r, const YAML::Node& n,
-                                                 const std::string& what) {
-  r.map(n, what, {"within", "timeout", "per_metre"});
+                                                 const std::string& what, const Fuzzy& fz) {
+  r.map(n, what, {"within", "timeout", "per_metre", "predicate"});
+  if (n["predicate"]) {
+    if (n.size() != 1) r.fail(n, "'predicate' takes no other key in '" + what + "'");
+    if (!fz.model) r.fail(n["predicate"], "a 'predicate' condition needs a top-level 'fuzzy' section");
+    const std::string text = r.string(n["predicate"], "predicate");
+    const int id = fz.model->compile(text, detail::origin(n["predicate"], r.file(), *fz.text));
+    return std::make_shared<FuzzyCondition>(fz.model, id, text);
+  }
   if (n["within"]) {
     if (n.size() != 1) r.fail(n, "'within' takes no other key in '" + what + "'");
     return std::make_shared<WithinDistance>(r.positive(n["within"], "within"));
@@ -21,10 +35,10 @@ std::shared_ptr<const Condition> parse_condition(const YamlReader& r, const YAML
     const double per = n["per_metre"] ? r.non_negative(n["per_metre"], "per_metre") : 0.0;
     return std::make_shared<Timeout>(r.positive(n["timeout"], "timeout"), per);
   }
-  r.fail(n, "expected 'within' or 'timeout' in '" + what + "'");
+  r.fail(n, "expected 'within', 'timeout' or 'predicate' in '" + what + "'");
 }
 
-TaskSpec parse_task(const YamlReader& r, const YAML::Node& n, const std::string& name) {
+TaskSpec parse_task(const YamlReader& r, const YAML::Node& n, const std::string& name, const Fuzzy& fz) {
   r.map(n, name, {"success", "failure", "on_failure"});
   TaskSpec t;
   t.name = name;
@@ -35,7 +49,7 @@ TaskSpec parse_task(const YamlReader& r, const YAML::Node& n, const std::string&
       r.fail(list, "expected a non-empty list of conditions for '" + std::string(key) + "'");
     for (const auto& c : list)
       (std::string(key) == "success" ? t.success : t.failure)
-          .push_back(parse_condition(r, c, name + "." + key));
+          .push_back(parse_condition(r, c, name + "." + key, fz));
   }
   if (n["on_failure"]) {
     const std::string s = r.string(n["on_failure"], "on_failure");
@@ -52,13 +66,16 @@ SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std
   const YamlReader r(file);
   const YAML::Node root = r.load(yaml_text);
   if (!root.IsMap()) throw common::ParseError(file, 1, 1, "expected a map at the top level");
-  r.map(root, "top level", {"tasks", "path_task", "max_replans", "replan_timeout", "suspend_in_manual"});
+  r.map(root, "top level", {"tasks", "path_task", "max_replans", "replan_timeout", "suspend_in_manual", "fuzzy"});
+  Fuzzy fz;
+  fz.text = &yaml_text;
+  if (root["fuzzy"]) fz.model = detail::parse_fuzzy(r, root["fuzzy"], yaml_text);
   if (!root["tasks"]) r.fail(root, "missing key 'tasks'");
   r.map(root["tasks"], "tasks", {"ReachPathPoint"});
   std::map<std::string, TaskSpec> tasks;
   for (auto it = root["tasks"].begin(); it != root["tasks"].end(); ++it) {
     const std::string name = it->first.Scalar();
-    tasks[name] = parse_task(r, it->second, name);
+    tasks[name] = parse_task(r, it->second, name, fz);
   }
   SequencerOptions o;
   std::string path_task = "ReachPathPoint";

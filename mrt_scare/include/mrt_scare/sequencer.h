@@ -64,6 +64,8 @@ class Sequencer {
   /// Monitors the active task with the current pose.
   std::vector<SequencerEvent> update(double now, const Pose2D& pose);
   std::vector<SequencerEvent> set_mode(Mode mode, double now);
+  /// The world model's crisp data that predicate conditions read (MAP's).
+  void set_world(CrispMap world) { world_ = std::move(world); }
 
   SequencerState state() const { return state_; }
   Mode mode() const { return mode_; }
@@ -88,7 +90,8 @@ class Sequencer {
   std::size_t reached_ = 0, failed_ = 0, replans_ = 0, plans_ = 0;
   int consecutive_aborts_ = 0;
   double replan_requested_at_ = 0.0;
-  SequencerEvent last_failure_{};  // the task whose failure asked for a re-plan
+  SequencerEvent last_failure_{};
+  CrispMap world_;  // the task whose failure asked for a re-plan
 };
 
 /// The goal as crisp data for the rule base: distance in cm and bearing in

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mrt_common/pose2d.h"
+#include "mrt_scare/fuzzy_model.h"
 
 namespace mrt::scare {
 
@@ -23,6 +24,7 @@ struct TaskContext {
   Pose2D pose;               // robot pose in the plan's frame
   Point2D goal;              // the task's path point
   double start_distance = 0; // m from the pose at activation to the goal
+  const CrispMap* world = nullptr;  // the world model's crisp data, if any
 };
 
 /// One condition of a task, built from the YAML configuration.
@@ -59,6 +61,24 @@ class Timeout : public Condition {
   double per_metre_;
 };
 
+/// A fuzzy predicate (Mr. BRIAN's language) over the world model's crisp
+/// data and the task's own: GoalDistance (cm), GoalBearing (deg, (-180,
+/// 180], counter-clockwise), StartDistance (cm), TaskElapsed (s). Holds when
+/// value * reliability >= threshold.
+class FuzzyCondition : public Condition {
+ public:
+  FuzzyCondition(std::shared_ptr<FuzzyModel> model, int expression, std::string text, double threshold = 0.5)
+      : model_(std::move(model)), expression_(expression), text_(std::move(text)), threshold_(threshold) {}
+  bool holds(const TaskContext& c) const override;
+  std::string describe() const override { return "predicate " + text_; }
+
+ private:
+  std::shared_ptr<FuzzyModel> model_;
+  int expression_;
+  std::string text_;
+  double threshold_;
+};
+
 /// What the sequencer does when a task fails.
 enum class OnFailure { kAbortAndReplan, kSkip };
 
@@ -88,7 +108,7 @@ class Task {
 
   void activate(double now, const Pose2D& pose);
   /// Evaluates the conditions; returns the (possibly new) state.
-  TaskState update(double now, const Pose2D& pose);
+  TaskState update(double now, const Pose2D& pose, const CrispMap* world = nullptr);
   void suspend(double now);
   void resume(double now);
   void abort();
