@@ -25,6 +25,7 @@ void print_stats(const std::string& p, const RunStats& s, double pre_ms) {
             << p << ".mean_length_ratio: " << s.mean_ratio << " ratio\n"
             << p << ".median_time: " << s.median_us << " us\n"
             << p << ".p95_time: " << s.p95_us << " us\n"
+            << p << ".mean_expansions: " << s.mean_expansions << " count\n"
             << p << ".preprocessing: " << pre_ms << " ms\n";
 }
 

@@ -75,6 +75,7 @@ SubgoalGraph::SubgoalGraph(const OccupancyGrid& grid)
   }
   const size_t n = subgoals_.size() + 2;
   g_.assign(n, 0.0);
+  h_.assign(n, 0.0);
   parent_.assign(n, -1);
   stamp_.assign(n, 0);
   goal_mark_.assign(n, 0);
@@ -144,27 +145,29 @@ std::vector<Cell> SubgoalGraph::plan(const Cell& start, const Cell& goal, double
     stamp_[v] = run_;
     closed_[v] = 0;
     g_[v] = std::numeric_limits<double>::infinity();
+    h_[v] = octile(point(v), goal);
     parent_[v] = -1;
   };
-  using Entry = std::pair<double, int>;
-  std::vector<Entry> heap;
+  heap_.clear();
+  // min-heap on f, ties broken towards the larger g (deeper first)
+  auto later = [](const Entry& a, const Entry& b) { return a.f > b.f; };
   auto relax = [&](int u, int v, double c) {
     touch(v);
     const double ng = g_[u] + c;
-    if (closed_[v] || ng >= g_[v]) return;
+    if (closed_[v] || ng >= g_[v] - 1e-9) return;
     g_[v] = ng;
     parent_[v] = u;
-    heap.emplace_back(-(ng + octile(point(v), goal)), v);
-    std::push_heap(heap.begin(), heap.end());
+    heap_.push_back({static_cast<float>(ng + h_[v]), static_cast<float>(ng), v});
+    std::push_heap(heap_.begin(), heap_.end(), later);
   };
   touch(S);
   g_[S] = 0.0;
-  heap.emplace_back(-octile(start, goal), S);
+  heap_.push_back({static_cast<float>(h_[S]), 0.0f, S});
   std::vector<int> start_edges;
-  while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end());
-    const int u = heap.back().second;
-    heap.pop_back();
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const int u = heap_.back().v;
+    heap_.pop_back();
     if (closed_[u]) continue;
     closed_[u] = 1;
     if (expansions) ++*expansions;

@@ -47,7 +47,14 @@ class SubgoalGraph {
   std::vector<int> adj_;
   std::vector<float> adj_cost_;
   // search state: subgoals 0..n-1, start n, goal n+1
+  struct Entry {
+    float f;
+    float g;
+    int v;
+  };
   std::vector<double> g_;
+  std::vector<double> h_;
+  std::vector<Entry> heap_;
   std::vector<int> parent_;
   std::vector<unsigned> stamp_;
   std::vector<unsigned> goal_mark_;
