@@ -11,6 +11,7 @@
 #include "mrt_spike/movingai.h"
 #include "mrt_spike/planner.h"
 #include "mrt_spike/scenario_run.h"
+#include "msl_replan.h"
 
 using namespace mrt::spike;
 namespace fs = std::filesystem;
@@ -108,7 +109,14 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"subgoal", "quadtree"}));
   app.add_option("--scale", b.scale, "upscale each map by this factor (cells become N x N blocks)")
       ->check(CLI::PositiveNumber);
+  int msl_steps = 0, msl_robots = 10;
+  app.add_option("--msl", msl_steps, "MSL field re-planning: this many 50 ms steps (then exit)");
+  app.add_option("--msl-robots", msl_robots, "moving robots on the MSL field")->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
+  if (msl_steps > 0) {
+    bench_msl(msl_steps, msl_robots, 16);
+    return 0;
+  }
   try {
     const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
     if (!dir.empty()) {

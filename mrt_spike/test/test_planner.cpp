@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "mrt_spike/jump_point_search.h"
 #include "mrt_spike/line_of_sight.h"
 #include "mrt_spike/movingai.h"
 #include "mrt_spike/planner.h"
@@ -264,6 +265,31 @@ TEST(SubgoalGraph, OctileCostEqualsAstarOnRandomMap) {
     EXPECT_TRUE(path_valid(g, p, s, t)) << k;
   }
   EXPECT_GT(solved, 100);
+}
+
+TEST(JumpPointSearch, OctileCostEqualsAstar) {
+  // Exact like the A* (same octile cost, valid path) on the random map and
+  // through the one-cell passage (25*sqrt(2) + 13, see NarrowPassageOneCellWide).
+  const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
+  JumpPointSearch jps(g);
+  GridAstar astar(g);
+  int solved = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Cell s{(k * 37) % 64, (k * 11) % 64}, t{(k * 53 + 7) % 64, (k * 29 + 3) % 64};
+    if (g.blocked(s.x, s.y) || g.blocked(t.x, t.y)) continue;
+    const PlanResult a = astar.plan(s, t), j = jps.plan(s, t);
+    ASSERT_EQ(a.solved, j.solved) << k;
+    if (!a.solved) continue;
+    ++solved;
+    EXPECT_NEAR(j.length, a.length, 1e-6) << k;
+    EXPECT_NEAR(path_length(j.path), a.length, 1e-6) << k;
+    EXPECT_TRUE(path_valid(g, j.path, s, t)) << k;
+  }
+  EXPECT_GT(solved, 100);
+  const OccupancyGrid p = load_movingai_map(kData + "/passage32.map");
+  const PlanResult j = JumpPointSearch(p).plan({2, 2}, {29, 2});
+  ASSERT_TRUE(j.solved);
+  EXPECT_NEAR(j.length, 25 * kS2 + 13, 1e-9);
 }
 
 TEST(ScenarioRun, OutputFormat) {

@@ -16,7 +16,7 @@ struct PlanResult {
   bool solved = false;
   std::vector<Cell> path;  ///< waypoints (cell centres), start first, goal last
   double length = 0.0;
-  std::string reason;      ///< why not solved
+  std::string reason;      ///< why not solved (DynamicSpike: "static" when the static plan was kept)
   Cell nearest;            ///< when not solved: the reachable cell nearest the goal
                            ///< (or nearest the start when the start is blocked)
   int expansions = 0;
