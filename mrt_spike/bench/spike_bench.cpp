@@ -1,6 +1,6 @@
 // spike_bench: SPIKE against the octile A* baseline on the same queries of
 // Moving AI scenarios; prints `name: value unit` lines.
-#include <CLI/CLI.hpp>
+#include "mrt_common/cli.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,8 +9,10 @@
 #include <iostream>
 
 #include "mrt_spike/movingai.h"
+#include "mrt_spike/ompl_planner.h"
 #include "mrt_spike/planner.h"
 #include "mrt_spike/scenario_run.h"
+#include "building_route.h"
 #include "msl_replan.h"
 
 using namespace mrt::spike;
@@ -38,7 +40,30 @@ struct BenchOptions {
   std::string vertices = "centre";
   std::string graph = "subgoal";
   int scale = 1;
+  int ompl = 0;             ///< OMPL's RRT* and PRM* on the first N queries (0: not run)
+  double ompl_time = 1.0;   ///< s per OMPL query
 };
+
+void bench_ompl(const std::string& name, const OccupancyGrid& grid, const std::vector<ScenarioQuery>& scen,
+                const std::vector<int>& idx, const BenchOptions& b) {
+  const std::vector<int> first(idx.begin(), idx.begin() + std::min<size_t>(idx.size(), b.ompl));
+  for (const char* planner : {"rrtstar", "prmstar"}) {
+    OmplPlanner op(grid, {planner, b.ompl_time, 1});
+    auto oo = run_queries(grid, scen, first, [&](const Cell& s, const Cell& g) { return op.plan(s, g); });
+    if (b.scale > 1) {  // optimal length from the A* on the upscaled map
+      GridAstar a(grid);
+      for (auto& o : oo) o.optimal = a.plan(scen[o.index].start, scen[o.index].goal).length;
+    }
+    const RunStats st = summarize(oo);
+    const std::string p = name + ".ompl_" + planner;
+    std::cout << p << ".queries: " << st.queries << " count\n"
+              << p << ".time_limit: " << b.ompl_time << " s\n"
+              << p << ".solved: " << st.solved_pct << " %\n"
+              << p << ".valid: " << st.valid_pct << " %\n"
+              << p << ".max_length_ratio: " << st.max_ratio << " ratio\n"
+              << p << ".mean_length_ratio: " << st.mean_ratio << " ratio\n";
+  }
+}
 
 // Each cell becomes a scale x scale block (a 512 x 512 map becomes 1024 x 1024).
 OccupancyGrid upscale(const OccupancyGrid& g, int k) {
@@ -87,58 +112,77 @@ void bench_map(const std::string& map_file, const std::string& scen_file, const 
   print_stats(name + ".astar", as, 0.0);
   std::cout << name << ".speedup_median: " << (ss.median_us > 0 ? as.median_us / ss.median_us : 0.0)
             << " ratio\n";
+  if (b.ompl > 0) bench_ompl(name, grid, scen, idx, b);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"SPIKE vs octile A* on Moving AI maps"};
+struct MainArgs {
   std::string map_file, scen_file, idx_file, dir;
-  BenchOptions b;
-  auto* o_map = app.add_option("--map", map_file, "Moving AI .map file");
-  app.add_option("--scen", scen_file, ".scen file (default: MAP.scen)");
-  app.add_option("--queries", idx_file, "file of query indices, one a line");
-  app.add_option("--dir", dir, "run every *.map with its *.map.scen in this directory")->excludes(o_map);
+  int msl_steps = 0, msl_robots = 10;
+  bool building = false;
+};
+
+void add_options(CLI::App& app, MainArgs& m, BenchOptions& b) {
+  auto* o_map = app.add_option("--map", m.map_file, "Moving AI .map file");
+  app.add_option("--scen", m.scen_file, ".scen file (default: MAP.scen)");
+  app.add_option("--queries", m.idx_file, "file of query indices, one a line");
+  app.add_option("--dir", m.dir, "run every *.map with its *.map.scen in this directory")->excludes(o_map);
   app.add_option("--every", b.every, "run every N-th query (when no --queries)")->check(CLI::PositiveNumber);
   app.add_option("--radius", b.radius, "inflation in cells");
   app.add_option("--max-leaf", b.max_leaf, "largest quadtree leaf side")->check(CLI::PositiveNumber);
-  app.add_option("--refine", b.refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
-  app.add_option("--vertices", b.vertices, "SPIKE: one vertex per leaf (centre) or corners + centre")
+  app.add_option("--refine", b.refine, "SPIKE on the quadtree: octile A* in the corridor of the coarse path (1) or not (0)");
+  app.add_option("--vertices", b.vertices, "SPIKE on the quadtree: one vertex per leaf (centre) or corners + centre")
       ->check(CLI::IsMember({"centre", "corners"}));
   app.add_option("--graph", b.graph, "SPIKE: search the subgoal graph or the quadtree's leaves")
       ->check(CLI::IsMember({"subgoal", "quadtree"}));
   app.add_option("--scale", b.scale, "upscale each map by this factor (cells become N x N blocks)")
       ->check(CLI::PositiveNumber);
-  int msl_steps = 0, msl_robots = 10;
-  app.add_option("--msl", msl_steps, "MSL field re-planning: this many 50 ms steps (then exit)");
-  app.add_option("--msl-robots", msl_robots, "moving robots on the MSL field")->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
-  if (msl_steps > 0) {
-    bench_msl(msl_steps, msl_robots, 16);
-    return 0;
-  }
+  app.add_option("--msl", m.msl_steps, "MSL field re-planning: this many 50 ms steps (then exit)");
+  app.add_option("--msl-robots", m.msl_robots, "moving robots on the MSL field")->check(CLI::PositiveNumber);
+  app.add_option("--ompl", b.ompl, "also run OMPL's RRT* and PRM* on the first N queries of each map");
+  app.add_option("--ompl-time", b.ompl_time, "OMPL time limit per query, s")->check(CLI::PositiveNumber);
+  app.add_flag("--building", m.building, "the long route on an office floor (then exit)");
+}
+
+void run_dir(const std::string& dir, const std::vector<int>& idx, const BenchOptions& b) {
+  std::vector<std::string> maps;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen")) maps.push_back(e.path().string());
+  std::sort(maps.begin(), maps.end());
+  for (const auto& m : maps) bench_map(m, m + ".scen", idx, b);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"SPIKE vs octile A* on Moving AI maps, the MSL field, a building", "spike_bench"};
+  MainArgs m;
+  BenchOptions b;
+  add_options(app, m, b);
+  const int rc = mrt::cli::parse_cli(app, argc, argv);
+  if (rc >= 0) return rc;
   try {
-    const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
-    if (!dir.empty()) {
-      std::vector<std::string> maps;
-      for (const auto& e : fs::directory_iterator(dir))
-        if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
-          maps.push_back(e.path().string());
-      std::sort(maps.begin(), maps.end());
-      for (const auto& m : maps) bench_map(m, m + ".scen", idx, b);
+    if (m.building) {
+      bench_building();
       return 0;
     }
-    if (map_file.empty()) {  // no arguments (scripts/bench.sh): the Moving AI set, else the test maps
+    if (m.msl_steps > 0) {
+      bench_msl(m.msl_steps, m.msl_robots, 16);
+      return 0;
+    }
+    const std::vector<int> idx = m.idx_file.empty() ? std::vector<int>{} : load_indices(m.idx_file);
+    if (!m.dir.empty()) {
+      run_dir(m.dir, idx, b);
+    } else if (m.map_file.empty()) {  // no arguments (scripts/bench.sh): everything
       const char* env = std::getenv("MRT_SPIKE_BENCH_DIR");
       const std::string d = env ? env : fs::exists("../shared/bench/movingai") ? "../shared/bench/movingai"
                                                                             : MRT_SPIKE_DATA;
       std::cout << "# maps from " << d << "\n";
-      for (const auto& e : fs::directory_iterator(d))
-        if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
-          bench_map(e.path().string(), e.path().string() + ".scen", idx, b);
-      return 0;
+      run_dir(d, idx, b);
+      bench_msl(1000, 10, 16);
+      bench_building();
+    } else {
+      bench_map(m.map_file, m.scen_file.empty() ? m.map_file + ".scen" : m.scen_file, idx, b);
     }
-    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, b);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "spike_bench: " << e.what() << "\n";

@@ -6,6 +6,7 @@
 
 #include "mrt_spike/line_of_sight.h"
 #include "mrt_spike/moving_obstacles.h"
+#include "mrt_spike/ompl_planner.h"
 
 using namespace mrt::spike;
 
@@ -75,4 +76,25 @@ TEST(DynamicSpike, ReplansAroundAnObstacleOnThePath) {
   r = spike.plan({1, 5}, {18, 5});
   EXPECT_FALSE(r.solved);
   EXPECT_EQ(r.reason, "goal (18, 5) is inside an obstacle");
+}
+
+TEST(OmplPlanner, RrtStarAndPrmStarOnAnOpenField) {
+  // 20 x 20 free: both solve (1,1) -> (18,18); simplified, the path is
+  // nearly the diagonal 17*sqrt(2) = 24.04 (at most 5 % longer) and valid.
+  const OccupancyGrid g(20, 20);
+  for (const char* name : {"rrtstar", "prmstar"}) {
+    OmplPlanner p(g, {name, 0.2, 7});
+    const PlanResult r = p.plan({1, 1}, {18, 18});
+    ASSERT_TRUE(r.solved) << name;
+    EXPECT_EQ(r.path.front(), (Cell{1, 1}));
+    EXPECT_EQ(r.path.back(), (Cell{18, 18}));
+    EXPECT_GE(r.length, 17 * std::sqrt(2.0) - 1e-9);
+    EXPECT_LE(r.length, 1.05 * 17 * std::sqrt(2.0)) << name;
+    EXPECT_TRUE(path_valid(g, r.path, {1, 1}, {18, 18})) << name;
+  }
+  EXPECT_THROW(OmplPlanner(g, {"rrt", 0.1, 1}), std::invalid_argument);
+  // a blocked goal: no path, with the reason
+  OccupancyGrid w(20, 20);
+  w.set_blocked(5, 5, true);
+  EXPECT_EQ(OmplPlanner(w).plan({1, 1}, {5, 5}).reason, "goal (5, 5) is inside an obstacle");
 }
