@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "mrt_common/yaml_reader.h"
+#include "mrt_spike/map_sources.h"
+#include "mrt_spike/planner.h"
 
 namespace mrt::roby {
 
@@ -87,7 +89,41 @@ RoadMap load_road_map(const std::string& path) {
   return parse_road_map(common::read_file(path, "cannot open file", 1 << 20), path);
 }
 
-RoutePlanner::RoutePlanner(RoadMap map) : map_(std::move(map)), unreachable_(map_.route.size(), false) {}
+struct RoutePlanner::Spike {
+  spike::WorldGrid map;
+  spike::OccupancyGrid inflated;
+  std::unique_ptr<spike::SpikePlanner> planner;
+};
+
+namespace {
+constexpr double kResolution = 0.1;  // m, SPIKE's finest cell on Roby's map
+constexpr double kMargin = 20.0;     // m of map around the buildings and the route
+}  // namespace
+
+RoutePlanner::RoutePlanner(RoadMap map)
+    : map_(std::move(map)), unreachable_(map_.route.size(), false), spike_(std::make_shared<Spike>()) {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  for (const auto& bl : map_.buildings)
+    x0 = std::min(x0, bl.xmin), y0 = std::min(y0, bl.ymin), x1 = std::max(x1, bl.xmax), y1 = std::max(y1, bl.ymax);
+  for (const auto& p : map_.route) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  spike::WorldGrid& m = spike_->map;
+  m.frame.resolution = kResolution;
+  m.frame.origin_x = x0 - kMargin, m.frame.origin_y = y0 - kMargin;
+  m.grid = spike::OccupancyGrid(static_cast<int>((x1 - x0 + 2 * kMargin) / kResolution) + 1,
+                                static_cast<int>((y1 - y0 + 2 * kMargin) / kResolution) + 1);
+  // A cell is blocked when it may touch a building (centre within half a
+  // cell diagonal); inflating by clearance + one cell diagonal then keeps
+  // every point of a valid segment at least `clearance` from every building.
+  const double half_diag = kResolution / std::sqrt(2.0);
+  for (int y = 0; y < m.grid.height(); ++y)
+    for (int x = 0; x < m.grid.width(); ++x) {
+      const Point2D c{m.frame.origin_x + kResolution * x, m.frame.origin_y + kResolution * y};
+      for (const auto& bl : map_.buildings)
+        if (point_rect_distance(c, bl) <= half_diag) m.grid.set_blocked(x, y, true);
+    }
+  spike_->inflated = spike::inflate(m.grid, (map_.clearance + 2 * half_diag) / kResolution);
+  spike_->planner = std::make_unique<spike::SpikePlanner>(spike_->inflated);
+}
 
 bool RoutePlanner::leg_free(const Point2D& a, const Point2D& b) const {
   for (const auto& bl : map_.buildings)
@@ -129,45 +165,29 @@ std::vector<Point2D> RoutePlanner::replan(const Point2D& from, const Point2D& fa
 std::vector<Point2D> RoutePlanner::detour(const Point2D& a, const Point2D& b) const {
   // A robot that gave up inside a building's clearance may leave it by any
   // leg that comes no closer to that building than it already is.
-  auto free_from = [&](std::size_t u, const Point2D& p, const Point2D& q) {
-    if (u != 0) return leg_free(p, q);
-    for (const auto& bl : map_.buildings) {
-      const double d = segment_rect_distance(p, q, bl);
-      if (d < map_.clearance && !(d > 0.0 && d >= point_rect_distance(p, bl) - 1e-9)) return false;
-    }
-    return true;
-  };
-  if (free_from(0, a, b)) return {};
-  // Visibility graph: a, b and every building corner pushed out by the
-  // clearance plus 1 % in x and y, so that a leg along a side between two
-  // such corners keeps the clearance.
-  std::vector<Point2D> nodes{a, b};
-  const double m = map_.clearance * 1.01;
-  for (const auto& bl : map_.buildings)
-    for (const Point2D& c : {Point2D{bl.xmin - m, bl.ymin - m}, Point2D{bl.xmax + m, bl.ymin - m},
-                             Point2D{bl.xmax + m, bl.ymax + m}, Point2D{bl.xmin - m, bl.ymax + m}})
-      nodes.push_back(c);
-  const std::size_t n = nodes.size();
-  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> prev(n, n);
-  std::vector<bool> done(n, false);
-  dist[0] = 0.0;
-  for (std::size_t it = 0; it < n; ++it) {
-    std::size_t u = n;
-    for (std::size_t i = 0; i < n; ++i)
-      if (!done[i] && dist[i] < std::numeric_limits<double>::infinity() && (u == n || dist[i] < dist[u])) u = i;
-    if (u == n || u == 1) break;
-    done[u] = true;
-    for (std::size_t v = 0; v < n; ++v) {
-      if (done[v] || v == u || !free_from(u, nodes[u], nodes[v])) continue;
-      const double d = dist[u] + std::hypot(nodes[v].x - nodes[u].x, nodes[v].y - nodes[u].y);
-      if (d < dist[v]) dist[v] = d, prev[v] = u;
-    }
+  bool clear = true;
+  for (const auto& bl : map_.buildings) {
+    const double d = segment_rect_distance(a, b, bl);
+    if (d < map_.clearance && !(d > 0.0 && d >= point_rect_distance(a, bl) - 1e-9)) clear = false;
   }
-  if (prev[1] == n) throw std::runtime_error("no collision-free way round the buildings");
+  if (clear) return {};
+  const Spike& sp = *spike_;
+  const spike::Cell ca = sp.map.cell_at(a.x, a.y), cb = sp.map.cell_at(b.x, b.y);
+  if (!sp.inflated.inside(ca.x, ca.y) || !sp.inflated.inside(cb.x, cb.y))
+    throw std::runtime_error("no collision-free way round the buildings (a point outside the planner's map)");
+  auto world = [&](const spike::Cell& c) {
+    return Point2D{sp.map.frame.origin_x + sp.map.frame.resolution * c.x,
+                   sp.map.frame.origin_y + sp.map.frame.resolution * c.y};
+  };
   std::vector<Point2D> via;
-  for (std::size_t v = prev[1]; v != 0; v = prev[v]) via.push_back(nodes[v]);
-  std::reverse(via.begin(), via.end());
+  spike::Cell from = ca;
+  if (sp.inflated.blocked(ca.x, ca.y)) {  // back out to the nearest cell keeping the clearance
+    from = spike::diagnose(sp.inflated, ca, cb).nearest;
+    via.push_back(world(from));
+  }
+  const spike::PlanResult r = sp.planner->plan(from, cb);
+  if (!r.solved) throw std::runtime_error("no collision-free way round the buildings (" + r.reason + ")");
+  for (size_t i = 1; i + 1 < r.path.size(); ++i) via.push_back(world(r.path[i]));
   return via;
 }
 

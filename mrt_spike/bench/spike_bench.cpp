@@ -1,6 +1,6 @@
 // spike_bench: SPIKE against the octile A* baseline on the same queries of
 // Moving AI scenarios; prints `name: value unit` lines.
-#include <CLI/CLI.hpp>
+#include "mrt_common/cli.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,8 +9,11 @@
 #include <iostream>
 
 #include "mrt_spike/movingai.h"
+#include "mrt_spike/ompl_planner.h"
 #include "mrt_spike/planner.h"
 #include "mrt_spike/scenario_run.h"
+#include "building_route.h"
+#include "msl_replan.h"
 
 using namespace mrt::spike;
 namespace fs = std::filesystem;
@@ -25,82 +28,161 @@ void print_stats(const std::string& p, const RunStats& s, double pre_ms) {
             << p << ".mean_length_ratio: " << s.mean_ratio << " ratio\n"
             << p << ".median_time: " << s.median_us << " us\n"
             << p << ".p95_time: " << s.p95_us << " us\n"
+            << p << ".mean_expansions: " << s.mean_expansions << " count\n"
             << p << ".preprocessing: " << pre_ms << " ms\n";
 }
 
+struct BenchOptions {
+  int every = 10;
+  double radius = 0.0;
+  int max_leaf = 64;
+  bool refine = true;
+  std::string vertices = "centre";
+  std::string graph = "subgoal";
+  int scale = 1;
+  int ompl = 0;             ///< OMPL's RRT* and PRM* on the first N queries (0: not run)
+  double ompl_time = 1.0;   ///< s per OMPL query
+};
+
+void bench_ompl(const std::string& name, const OccupancyGrid& grid, const std::vector<ScenarioQuery>& scen,
+                const std::vector<int>& idx, const BenchOptions& b) {
+  const std::vector<int> first(idx.begin(), idx.begin() + std::min<size_t>(idx.size(), b.ompl));
+  for (const char* planner : {"rrtstar", "prmstar"}) {
+    OmplPlanner op(grid, {planner, b.ompl_time, 1});
+    auto oo = run_queries(grid, scen, first, [&](const Cell& s, const Cell& g) { return op.plan(s, g); });
+    if (b.scale > 1) {  // optimal length from the A* on the upscaled map
+      GridAstar a(grid);
+      for (auto& o : oo) o.optimal = a.plan(scen[o.index].start, scen[o.index].goal).length;
+    }
+    const RunStats st = summarize(oo);
+    const std::string p = name + ".ompl_" + planner;
+    std::cout << p << ".queries: " << st.queries << " count\n"
+              << p << ".time_limit: " << b.ompl_time << " s\n"
+              << p << ".solved: " << st.solved_pct << " %\n"
+              << p << ".valid: " << st.valid_pct << " %\n"
+              << p << ".max_length_ratio: " << st.max_ratio << " ratio\n"
+              << p << ".mean_length_ratio: " << st.mean_ratio << " ratio\n";
+  }
+}
+
+// Each cell becomes a scale x scale block (a 512 x 512 map becomes 1024 x 1024).
+OccupancyGrid upscale(const OccupancyGrid& g, int k) {
+  if (k == 1) return g;
+  OccupancyGrid out(g.width() * k, g.height() * k);
+  for (int y = 0; y < out.height(); ++y)
+    for (int x = 0; x < out.width(); ++x) out.set_blocked(x, y, g.blocked(x / k, y / k));
+  return out;
+}
+
 void bench_map(const std::string& map_file, const std::string& scen_file, const std::vector<int>& given,
-               int every, double radius, int max_leaf, bool refine,
-               const std::string& vertices) {
-  const std::string name = fs::path(map_file).stem().string();
-  const OccupancyGrid grid = inflate(load_movingai_map(map_file), radius);
-  const auto scen = load_scenario(scen_file);
+               const BenchOptions& b) {
+  const std::string name = fs::path(map_file).stem().string() + (b.scale > 1 ? "_x" + std::to_string(b.scale) : "");
+  const OccupancyGrid grid = inflate(upscale(load_movingai_map(map_file), b.scale), b.radius);
+  auto scen = load_scenario(scen_file);
+  for (auto& q : scen) {
+    q.start = {q.start.x * b.scale, q.start.y * b.scale};
+    q.goal = {q.goal.x * b.scale, q.goal.y * b.scale};
+  }
   std::vector<int> idx = given;
   if (idx.empty())
-    for (size_t i = 0; i < scen.size(); i += static_cast<size_t>(every)) idx.push_back(static_cast<int>(i));
+    for (size_t i = 0; i < scen.size(); i += static_cast<size_t>(b.every)) idx.push_back(static_cast<int>(i));
   auto t0 = std::chrono::steady_clock::now();
   SpikeOptions opts;
-  opts.quadtree.max_leaf_size = max_leaf;
-  opts.refine = refine;
-  opts.quadtree.centre_only = vertices == "centre";
+  opts.quadtree.max_leaf_size = b.max_leaf;
+  opts.refine = b.refine;
+  opts.quadtree.centre_only = b.vertices == "centre";
+  opts.graph = b.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
   SpikePlanner spike(grid, opts);
   const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   GridAstar astar(grid);
-  const auto so = run_queries(grid, scen, idx, [&](const Cell& s, const Cell& g) { return spike.plan(s, g); });
-  const auto ao = run_queries(grid, scen, idx, [&](const Cell& s, const Cell& g) { return astar.plan(s, g); });
+  auto so = run_queries(grid, scen, idx, [&](const Cell& s, const Cell& g) { return spike.plan(s, g); });
+  auto ao = run_queries(grid, scen, idx, [&](const Cell& s, const Cell& g) { return astar.plan(s, g); });
+  if (b.scale > 1)  // the scenario's optimal length is for the original map: use the A*'s (optimal) one
+    for (size_t i = 0; i < so.size(); ++i) so[i].optimal = ao[i].optimal = ao[i].result.length;
   const RunStats ss = summarize(so), as = summarize(ao);
   std::cout << name << ".width: " << grid.width() << " cells\n"
             << name << ".height: " << grid.height() << " cells\n"
             << name << ".leaves: " << spike.quadtree().leaves().size() << " count\n"
             << name << ".free_cells: " << grid.count_free() << " count\n";
+  if (spike.subgoal_graph())
+    std::cout << name << ".subgoals: " << spike.subgoal_graph()->subgoals().size() << " count\n"
+              << name << ".subgoal_edges: " << spike.subgoal_graph()->edge_count() << " count\n";
   print_stats(name + ".spike", ss, pre_ms);
   std::cout << name << ".spike.fallbacks: " << ss.fallbacks << " count\n";
   print_stats(name + ".astar", as, 0.0);
   std::cout << name << ".speedup_median: " << (ss.median_us > 0 ? as.median_us / ss.median_us : 0.0)
             << " ratio\n";
+  if (b.ompl > 0) bench_ompl(name, grid, scen, idx, b);
+}
+
+struct MainArgs {
+  std::string map_file, scen_file, idx_file, dir;
+  int msl_steps = 0, msl_robots = 10;
+  bool building = false;
+};
+
+void add_options(CLI::App& app, MainArgs& m, BenchOptions& b) {
+  auto* o_map = app.add_option("--map", m.map_file, "Moving AI .map file");
+  app.add_option("--scen", m.scen_file, ".scen file (default: MAP.scen)");
+  app.add_option("--queries", m.idx_file, "file of query indices, one a line");
+  app.add_option("--dir", m.dir, "run every *.map with its *.map.scen in this directory")->excludes(o_map);
+  app.add_option("--every", b.every, "run every N-th query (when no --queries)")->check(CLI::PositiveNumber);
+  app.add_option("--radius", b.radius, "inflation in cells");
+  app.add_option("--max-leaf", b.max_leaf, "largest quadtree leaf side")->check(CLI::PositiveNumber);
+  app.add_option("--refine", b.refine, "SPIKE on the quadtree: octile A* in the corridor of the coarse path (1) or not (0)");
+  app.add_option("--vertices", b.vertices, "SPIKE on the quadtree: one vertex per leaf (centre) or corners + centre")
+      ->check(CLI::IsMember({"centre", "corners"}));
+  app.add_option("--graph", b.graph, "SPIKE: search the subgoal graph or the quadtree's leaves")
+      ->check(CLI::IsMember({"subgoal", "quadtree"}));
+  app.add_option("--scale", b.scale, "upscale each map by this factor (cells become N x N blocks)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--msl", m.msl_steps, "MSL field re-planning: this many 50 ms steps (then exit)");
+  app.add_option("--msl-robots", m.msl_robots, "moving robots on the MSL field")->check(CLI::PositiveNumber);
+  app.add_option("--ompl", b.ompl, "also run OMPL's RRT* and PRM* on the first N queries of each map");
+  app.add_option("--ompl-time", b.ompl_time, "OMPL time limit per query, s")->check(CLI::PositiveNumber);
+  app.add_flag("--building", m.building, "the long route on an office floor (then exit)");
+}
+
+void run_dir(const std::string& dir, const std::vector<int>& idx, const BenchOptions& b) {
+  std::vector<std::string> maps;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen")) maps.push_back(e.path().string());
+  std::sort(maps.begin(), maps.end());
+  for (const auto& m : maps) bench_map(m, m + ".scen", idx, b);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"SPIKE vs octile A* on Moving AI maps"};
-  std::string map_file, scen_file, idx_file, dir;
-  int every = 10, max_leaf = 64;
-  double radius = 0.0;
-  bool refine = true;
-  std::string vertices = "centre";
-  auto* o_map = app.add_option("--map", map_file, "Moving AI .map file");
-  app.add_option("--scen", scen_file, ".scen file (default: MAP.scen)");
-  app.add_option("--queries", idx_file, "file of query indices, one a line");
-  app.add_option("--dir", dir, "run every *.map with its *.map.scen in this directory")->excludes(o_map);
-  app.add_option("--every", every, "run every N-th query (when no --queries)")->check(CLI::PositiveNumber);
-  app.add_option("--radius", radius, "inflation in cells");
-  app.add_option("--max-leaf", max_leaf, "largest quadtree leaf side")->check(CLI::PositiveNumber);
-  app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
-  app.add_option("--vertices", vertices, "SPIKE: one vertex per leaf (centre) or corners + centre")
-      ->check(CLI::IsMember({"centre", "corners"}));
-  CLI11_PARSE(app, argc, argv);
+  CLI::App app{"SPIKE vs octile A* on Moving AI maps, the MSL field, a building", "spike_bench"};
+  MainArgs m;
+  BenchOptions b;
+  add_options(app, m, b);
+  const int rc = mrt::cli::parse_cli(app, argc, argv);
+  if (rc >= 0) return rc;
   try {
-    const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
-    if (!dir.empty()) {
-      std::vector<std::string> maps;
-      for (const auto& e : fs::directory_iterator(dir))
-        if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
-          maps.push_back(e.path().string());
-      std::sort(maps.begin(), maps.end());
-      for (const auto& m : maps) bench_map(m, m + ".scen", idx, every, radius, max_leaf, refine, vertices);
+    if (m.building) {
+      bench_building();
       return 0;
     }
-    if (map_file.empty()) {  // no arguments (scripts/bench.sh): the Moving AI set, else the test maps
+    if (m.msl_steps > 0) {
+      bench_msl(m.msl_steps, m.msl_robots, 16);
+      return 0;
+    }
+    const std::vector<int> idx = m.idx_file.empty() ? std::vector<int>{} : load_indices(m.idx_file);
+    if (!m.dir.empty()) {
+      run_dir(m.dir, idx, b);
+    } else if (m.map_file.empty()) {  // no arguments (scripts/bench.sh): everything
       const char* env = std::getenv("MRT_SPIKE_BENCH_DIR");
       const std::string d = env ? env : fs::exists("../shared/bench/movingai") ? "../shared/bench/movingai"
                                                                             : MRT_SPIKE_DATA;
       std::cout << "# maps from " << d << "\n";
-      for (const auto& e : fs::directory_iterator(d))
-        if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen"))
-          bench_map(e.path().string(), e.path().string() + ".scen", idx, every, radius, max_leaf, refine, vertices);
-      return 0;
+      run_dir(d, idx, b);
+      bench_msl(1000, 10, 16);
+      bench_building();
+    } else {
+      bench_map(m.map_file, m.scen_file.empty() ? m.map_file + ".scen" : m.scen_file, idx, b);
     }
-    bench_map(map_file, scen_file.empty() ? map_file + ".scen" : scen_file, idx, every, radius, max_leaf, refine, vertices);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "spike_bench: " << e.what() << "\n";

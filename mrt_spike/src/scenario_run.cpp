@@ -53,6 +53,7 @@ RunStats summarize(const std::vector<QueryOutcome>& outcomes) {
   double sum_ratio = 0.0;
   for (const auto& o : outcomes) {
     times.push_back(o.time_us);
+    s.mean_expansions += o.result.expansions / static_cast<double>(outcomes.size());
     if (o.result.fallback) ++s.fallbacks;
     if (!o.result.solved) continue;
     ++solved;

@@ -40,6 +40,7 @@ std::vector<Cell> string_pull(const Quadtree& tree, const std::vector<Cell>& pat
 SpikePlanner::SpikePlanner(const OccupancyGrid& grid, SpikeOptions options)
     : grid_(grid), options_(options), tree_(new Quadtree(grid, options.quadtree)),
       fallback_(new GridAstar(grid)) {
+  if (options_.graph == SpikeOptions::Graph::subgoal) subgoals_ = std::make_unique<SubgoalGraph>(grid);
   const size_t n = tree_->vertices().size() + 2;
   g_.assign(n, 0.0);
   parent_.assign(n, -1);
@@ -52,6 +53,19 @@ SpikePlanner::SpikePlanner(const OccupancyGrid& grid, SpikeOptions options)
 PlanResult SpikePlanner::plan(const Cell& start, const Cell& goal) {
   PlanResult r;
   if (grid_.blocked(start.x, start.y) || grid_.blocked(goal.x, goal.y)) return diagnose(grid_, start, goal);
+  if (subgoals_) {
+    if (tree_->line_of_sight(start, goal)) {
+      r.path = {start, goal};
+      if (start == goal) r.path.pop_back();
+    } else {
+      r.path = subgoals_->plan(start, goal, nullptr, &r.expansions);
+      if (r.path.empty()) return diagnose(grid_, start, goal);
+      if (options_.smooth) r.path = string_pull(*tree_, r.path);
+    }
+    r.length = path_length(r.path);
+    r.solved = true;
+    return r;
+  }
   std::vector<Cell> path;
   const double len = search(start, goal, path, r.expansions);
   if (len < 0.0) {  // not connected in the quadtree graph: ask the grid

@@ -6,11 +6,13 @@
 #include <sstream>
 #include <string>
 
+#include "mrt_spike/jump_point_search.h"
 #include "mrt_spike/line_of_sight.h"
 #include "mrt_spike/movingai.h"
 #include "mrt_spike/planner.h"
 #include "mrt_spike/quadtree.h"
 #include "mrt_spike/scenario_run.h"
+#include "mrt_spike/subgoal_graph.h"
 
 using namespace mrt::spike;
 
@@ -110,6 +112,7 @@ TEST(Planner, NarrowPassageOneCellWide) {
   EXPECT_TRUE(path_valid(g, a.path, {2, 2}, {29, 2}));
   for (int mode = 0; mode < 4; ++mode) {
     SpikeOptions opts;
+    opts.graph = SpikeOptions::Graph::quadtree;
     opts.quadtree.centre_only = mode % 2 == 0;
     opts.refine = mode >= 2;  // without refinement the quadtree search alone finds the gap
     SpikePlanner spike(g, opts);
@@ -124,6 +127,12 @@ TEST(Planner, NarrowPassageOneCellWide) {
       EXPECT_LE(s.length, 25 * kS2 + 13 + 1e-9);
     }
   }
+  // the subgoal graph: octile-optimal before string pulling, so at most octile after
+  const PlanResult sg = SpikePlanner(g).plan({2, 2}, {29, 2});
+  ASSERT_TRUE(sg.solved);
+  EXPECT_TRUE(path_valid(g, sg.path, {2, 2}, {29, 2}));
+  EXPECT_GE(sg.length, 2 * std::hypot(13.5, 17.5));
+  EXPECT_LE(sg.length, 25 * kS2 + 13 + 1e-9);
 }
 
 TEST(Planner, OpenSpaceStraightLine) {
@@ -196,6 +205,7 @@ TEST_P(SpikeVertices, MatchesOctileOnRandomMap) {
   // SPIKE's path valid and at most 1.01 x the octile A* length.
   const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
   SpikeOptions opts;
+  opts.graph = SpikeOptions::Graph::quadtree;
   opts.quadtree.centre_only = GetParam();
   SpikePlanner spike(g, opts);
   GridAstar astar(g);
@@ -216,6 +226,71 @@ TEST_P(SpikeVertices, MatchesOctileOnRandomMap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CentreAndCorners, SpikeVertices, ::testing::Values(true, false));
+
+TEST(SubgoalGraph, CornersOfAWallEnd) {
+  // The wall of column 3, rows 0-4, has one end: its convex corners are the
+  // free cells diagonal to (3,4) with both shared sides free, (2,5) and
+  // (4,5) (the map border makes none: the cells beside are blocked too).
+  // They see each other straight across (3,5): one edge each way.
+  const OccupancyGrid g = wall_map();
+  SubgoalGraph sg(g);
+  EXPECT_EQ(sg.subgoals(), (std::vector<Cell>{{2, 5}, {4, 5}}));
+  EXPECT_EQ(sg.edge_count(), 2u);
+  double cost = 0.0;
+  const std::vector<Cell> p = sg.plan({1, 1}, {5, 1}, &cost);
+  EXPECT_NEAR(cost, 8 + 2 * kS2, 1e-9);  // as the A* in AroundTheEndOfAWall
+  EXPECT_TRUE(path_valid(g, p, {1, 1}, {5, 1}));
+  EXPECT_NEAR(path_length(p), 8 + 2 * kS2, 1e-9);  // waypoints are the octile runs' ends
+  EXPECT_TRUE(sg.plan({3, 2}, {5, 1}).empty());    // start in the wall
+}
+
+TEST(SubgoalGraph, OctileCostEqualsAstarOnRandomMap) {
+  // The subgoal graph search is exact: the same octile cost as the A* on
+  // every pair of the 64x64 random map, and its waypoints form a valid path.
+  const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
+  SubgoalGraph sg(g);
+  GridAstar astar(g);
+  int solved = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Cell s{(k * 37) % 64, (k * 11) % 64}, t{(k * 53 + 7) % 64, (k * 29 + 3) % 64};
+    if (g.blocked(s.x, s.y) || g.blocked(t.x, t.y)) continue;
+    const PlanResult a = astar.plan(s, t);
+    double cost = -1.0;
+    const std::vector<Cell> p = sg.plan(s, t, &cost);
+    ASSERT_EQ(a.solved, !p.empty()) << k;
+    if (!a.solved) continue;
+    ++solved;
+    EXPECT_NEAR(cost, a.length, 1e-6) << k;
+    EXPECT_NEAR(path_length(p), a.length, 1e-6) << k;
+    EXPECT_TRUE(path_valid(g, p, s, t)) << k;
+  }
+  EXPECT_GT(solved, 100);
+}
+
+TEST(JumpPointSearch, OctileCostEqualsAstar) {
+  // Exact like the A* (same octile cost, valid path) on the random map and
+  // through the one-cell passage (25*sqrt(2) + 13, see NarrowPassageOneCellWide).
+  const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
+  JumpPointSearch jps(g);
+  GridAstar astar(g);
+  int solved = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Cell s{(k * 37) % 64, (k * 11) % 64}, t{(k * 53 + 7) % 64, (k * 29 + 3) % 64};
+    if (g.blocked(s.x, s.y) || g.blocked(t.x, t.y)) continue;
+    const PlanResult a = astar.plan(s, t), j = jps.plan(s, t);
+    ASSERT_EQ(a.solved, j.solved) << k;
+    if (!a.solved) continue;
+    ++solved;
+    EXPECT_NEAR(j.length, a.length, 1e-6) << k;
+    EXPECT_NEAR(path_length(j.path), a.length, 1e-6) << k;
+    EXPECT_TRUE(path_valid(g, j.path, s, t)) << k;
+  }
+  EXPECT_GT(solved, 100);
+  const OccupancyGrid p = load_movingai_map(kData + "/passage32.map");
+  const PlanResult j = JumpPointSearch(p).plan({2, 2}, {29, 2});
+  ASSERT_TRUE(j.solved);
+  EXPECT_NEAR(j.length, 25 * kS2 + 13, 1e-9);
+}
 
 TEST(ScenarioRun, OutputFormat) {
   const OccupancyGrid g = load_movingai_map(kData + "/passage32.map");

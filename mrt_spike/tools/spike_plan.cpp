@@ -1,6 +1,4 @@
-// spike_plan: SPIKE (or the octile A* baseline) on a Moving AI map.
-#include <CLI/CLI.hpp>
-
+// spike_plan: SPIKE (or the octile A* baseline, or OMPL) on a Moving AI map.
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -8,81 +6,110 @@
 #include <iostream>
 #include <memory>
 
+#include "mrt_common/cli.h"
 #include "mrt_spike/line_of_sight.h"
 #include "mrt_spike/movingai.h"
+#include "mrt_spike/ompl_planner.h"
 #include "mrt_spike/planner.h"
 #include "mrt_spike/scenario_run.h"
 
 using namespace mrt::spike;
 
-int main(int argc, char** argv) {
-  CLI::App app{"SPIKE planner on a Moving AI .map (cell coordinates: column x, row y)"};
+namespace {
+
+struct Args {
   std::string map_file, scen_file, idx_file, out_file, algo = "spike";
   std::vector<int> start, goal;
   double radius = 0.0;
   bool refine = true;
-  std::string vertices = "centre";
+  std::string vertices = "centre", graph = "subgoal";
   int max_leaf = 64;
-  app.add_option("--map", map_file, "Moving AI .map file")->required();
-  auto* o_start = app.add_option("--start", start, "start X Y")->expected(2);
-  auto* o_goal = app.add_option("--goal", goal, "goal X Y")->expected(2);
-  auto* o_scen = app.add_option("--scen", scen_file, ".scen file");
-  app.add_option("--queries", idx_file, "file of query indices, one a line")->needs(o_scen);
-  app.add_option("--algo", algo, "spike | astar")->check(CLI::IsMember({"spike", "astar"}));
-  app.add_option("--out", out_file, "write the output here instead of stdout");
-  app.add_option("--radius", radius, "inflation: robot radius + safety distance, in cells");
-  app.add_option("--max-leaf", max_leaf, "largest quadtree leaf side, cells")->check(CLI::PositiveNumber);
+  std::string ompl_planner = "rrtstar";
+  double ompl_time = 1.0;
+};
+
+void add_options(CLI::App& app, Args& a) {
+  app.add_option("--map", a.map_file, "Moving AI .map file")->required();
+  auto* o_start = app.add_option("--start", a.start, "start X Y")->expected(2);
+  auto* o_goal = app.add_option("--goal", a.goal, "goal X Y")->expected(2);
+  auto* o_scen = app.add_option("--scen", a.scen_file, ".scen file");
+  app.add_option("--queries", a.idx_file, "file of query indices, one a line")->needs(o_scen);
+  app.add_option("--algo", a.algo, "spike | astar | ompl")->check(CLI::IsMember({"spike", "astar", "ompl"}));
+  app.add_option("--ompl-planner", a.ompl_planner, "OMPL planner for --algo ompl")
+      ->check(CLI::IsMember({"rrtstar", "prmstar"}));
+  app.add_option("--ompl-time", a.ompl_time, "OMPL time limit per query, s")->check(CLI::PositiveNumber);
+  app.add_option("--out", a.out_file, "write the output here instead of stdout");
+  app.add_option("--radius", a.radius, "inflation: robot radius + safety distance, in cells");
+  app.add_option("--max-leaf", a.max_leaf, "largest quadtree leaf side, cells")->check(CLI::PositiveNumber);
   o_start->needs(o_goal);
   o_goal->needs(o_start);
   o_scen->excludes(o_start);
-  app.add_option("--refine", refine, "SPIKE: octile A* in the corridor of the coarse path (1) or not (0)");
-  app.add_option("--vertices", vertices, "SPIKE: one vertex per leaf (centre) or corners + centre")
+  app.add_option("--graph", a.graph, "SPIKE: search the subgoal graph or the quadtree's leaves")
+      ->check(CLI::IsMember({"subgoal", "quadtree"}));
+  app.add_option("--refine", a.refine, "SPIKE on the quadtree: octile A* in the corridor of the coarse path (1) or not (0)");
+  app.add_option("--vertices", a.vertices, "SPIKE on the quadtree: one vertex per leaf (centre) or corners + centre")
       ->check(CLI::IsMember({"centre", "corners"}));
-  CLI11_PARSE(app, argc, argv);
-  if (scen_file.empty() && start.empty()) {
+}
+
+int run(const Args& a) {
+  const OccupancyGrid grid = inflate(load_movingai_map(a.map_file), a.radius);
+  std::ofstream file;
+  if (!a.out_file.empty()) {
+    file.open(a.out_file);
+    if (!file) throw std::runtime_error(a.out_file + ": cannot write");
+  }
+  std::ostream& out = a.out_file.empty() ? std::cout : file;
+  const auto t0 = std::chrono::steady_clock::now();
+  SpikeOptions opts;
+  opts.quadtree.max_leaf_size = a.max_leaf;
+  opts.refine = a.refine;
+  opts.quadtree.centre_only = a.vertices == "centre";
+  opts.graph = a.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
+  std::unique_ptr<SpikePlanner> spike;
+  std::unique_ptr<GridAstar> astar;
+  std::unique_ptr<OmplPlanner> ompl;
+  if (a.algo == "spike") spike = std::make_unique<SpikePlanner>(grid, opts);
+  else if (a.algo == "ompl") ompl = std::make_unique<OmplPlanner>(grid, OmplOptions{a.ompl_planner, a.ompl_time, 1});
+  else astar = std::make_unique<GridAstar>(grid);
+  const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << "preprocessing_ms: " << pre_ms << " ms\n";
+  PlanFn plan = [&](const Cell& s, const Cell& g) {
+    return spike ? spike->plan(s, g) : ompl ? ompl->plan(s, g) : astar->plan(s, g);
+  };
+  if (!a.scen_file.empty()) {
+    const auto scen = load_scenario(a.scen_file);
+    const std::vector<int> idx = a.idx_file.empty() ? std::vector<int>{} : load_indices(a.idx_file);
+    for (const auto& o : run_queries(grid, scen, idx, plan)) print_outcome(out, o);
+    return 0;
+  }
+  QueryOutcome o;
+  const Cell s{a.start[0], a.start[1]}, g{a.goal[0], a.goal[1]};
+  const auto t1 = std::chrono::steady_clock::now();
+  o.result = plan(s, g);
+  o.time_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t1).count();
+  if (!o.result.solved) {
+    out << "no path: " << o.result.reason << "; nearest reachable point " << o.result.nearest.x << " "
+        << o.result.nearest.y << "\n";
+    return 1;
+  }
+  print_outcome(out, o);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"SPIKE planner on a Moving AI .map (cell coordinates: column x, row y)", "spike_plan"};
+  Args a;
+  add_options(app, a);
+  const int rc = mrt::cli::parse_cli(app, argc, argv);
+  if (rc >= 0) return rc;
+  if (a.scen_file.empty() && a.start.empty()) {
     std::cerr << "spike_plan: give --start X Y --goal X Y or --scen FILE\n";
     return 2;
   }
   try {
-    const OccupancyGrid raw = load_movingai_map(map_file);
-    const OccupancyGrid grid = inflate(raw, radius);
-    std::ofstream file;
-    if (!out_file.empty()) {
-      file.open(out_file);
-      if (!file) throw std::runtime_error(out_file + ": cannot write");
-    }
-    std::ostream& out = out_file.empty() ? std::cout : file;
-    const auto t0 = std::chrono::steady_clock::now();
-    SpikeOptions opts;
-    opts.quadtree.max_leaf_size = max_leaf;
-  opts.refine = refine;
-  opts.quadtree.centre_only = vertices == "centre";
-    std::unique_ptr<SpikePlanner> spike;
-    std::unique_ptr<GridAstar> astar;
-    if (algo == "spike") spike = std::make_unique<SpikePlanner>(grid, opts);
-    else astar = std::make_unique<GridAstar>(grid);
-    const double pre_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    std::cerr << "preprocessing_ms: " << pre_ms << " ms\n";
-    PlanFn plan = [&](const Cell& s, const Cell& g) { return spike ? spike->plan(s, g) : astar->plan(s, g); };
-    if (!scen_file.empty()) {
-      const auto scen = load_scenario(scen_file);
-      const std::vector<int> idx = idx_file.empty() ? std::vector<int>{} : load_indices(idx_file);
-      for (const auto& o : run_queries(grid, scen, idx, plan)) print_outcome(out, o);
-      return 0;
-    }
-    QueryOutcome o;
-    const Cell s{start[0], start[1]}, g{goal[0], goal[1]};
-    const auto t1 = std::chrono::steady_clock::now();
-    o.result = plan(s, g);
-    o.time_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t1).count();
-    if (!o.result.solved) {
-      out << "no path: " << o.result.reason << "; nearest reachable point " << o.result.nearest.x << " "
-          << o.result.nearest.y << "\n";
-      return 1;
-    }
-    print_outcome(out, o);
-    return 0;
+    return run(a);
   } catch (const std::exception& e) {
     std::cerr << "spike_plan: " << e.what() << "\n";
     return 2;

@@ -1,6 +1,6 @@
-// route_planner_node: the external planner's stand-in (SPIKE replaces it):
-// publishes the route over the map of buildings, and a new plan from the
-// current pose on every re-plan request.
+// route_planner_node: Roby's external planner: publishes the route over the
+// map of buildings, and on every re-plan request a new plan from the current
+// pose, its legs round the buildings planned by SPIKE (mrt_spike).
 #include <geometry_msgs/PoseStamped.h>
 #include <mrt_msgs/PlanRequest.h>
 #include <nav_msgs/Path.h>

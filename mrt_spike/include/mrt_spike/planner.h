@@ -8,6 +8,7 @@
 
 #include "mrt_spike/grid.h"
 #include "mrt_spike/quadtree.h"
+#include "mrt_spike/subgoal_graph.h"
 
 namespace mrt::spike {
 
@@ -15,7 +16,7 @@ struct PlanResult {
   bool solved = false;
   std::vector<Cell> path;  ///< waypoints (cell centres), start first, goal last
   double length = 0.0;
-  std::string reason;      ///< why not solved
+  std::string reason;      ///< why not solved (DynamicSpike: "static" when the static plan was kept)
   Cell nearest;            ///< when not solved: the reachable cell nearest the goal
                            ///< (or nearest the start when the start is blocked)
   int expansions = 0;
@@ -50,6 +51,10 @@ class GridAstar {
 };
 
 struct SpikeOptions {
+  /// Search graph: the subgoal graph (octile-optimal, then string pulling;
+  /// the default) or the quadtree's leaves (Lazy Theta*, optionally refined).
+  enum class Graph { subgoal, quadtree };
+  Graph graph = Graph::subgoal;
   QuadtreeOptions quadtree;
   bool smooth = true;  ///< final string pulling
   bool refine = true;  ///< octile A* + string pulling in the corridor of leaves around the path
@@ -64,6 +69,8 @@ class SpikePlanner {
   SpikePlanner(const OccupancyGrid& grid, SpikeOptions options = {});
   PlanResult plan(const Cell& start, const Cell& goal);
   const Quadtree& quadtree() const { return *tree_; }
+  /// The subgoal graph (null when options.graph is quadtree).
+  const SubgoalGraph* subgoal_graph() const { return subgoals_.get(); }
   const OccupancyGrid& grid() const { return grid_; }
 
  private:
@@ -75,6 +82,7 @@ class SpikePlanner {
   SpikeOptions options_;
   std::unique_ptr<Quadtree> tree_;
   std::unique_ptr<GridAstar> fallback_;
+  std::unique_ptr<SubgoalGraph> subgoals_;
   // search state, indexed by leaf id; start = n, goal = n + 1
   std::vector<double> g_;
   std::vector<int> parent_;

@@ -41,6 +41,7 @@ struct RunStats {
   double median_us = 0.0;
   double p95_us = 0.0;
   int fallbacks = 0;
+  double mean_expansions = 0.0;
 };
 RunStats summarize(const std::vector<QueryOutcome>& outcomes);
 

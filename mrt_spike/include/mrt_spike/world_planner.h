@@ -1,0 +1,59 @@
+// SPIKE in world units (metres, radians): the map, robot radius, safety
+// distance, output spacing and the moving obstacles; what spike_node wraps.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mrt_spike/map_sources.h"
+#include "mrt_spike/moving_obstacles.h"
+#include "mrt_spike/poses.h"
+
+namespace mrt::spike {
+
+struct WorldPlannerOptions {
+  double robot_radius = 0.3;     ///< m
+  double safety_distance = 0.1;  ///< m, added to the robot radius
+  double spacing = 0.25;         ///< m between output poses
+  double horizon = 0.5;          ///< s of an obstacle's motion its footprint covers
+  SpikeOptions spike;
+};
+
+struct WorldPlan {
+  bool solved = false;
+  std::vector<Pose> poses;       ///< world frame, every `spacing`, last at the goal
+  std::vector<Cell> waypoints;   ///< the path's corners, cells
+  double length = 0.0;           ///< m
+  std::string reason;            ///< when not solved
+  double nearest_x = 0.0, nearest_y = 0.0;  ///< when not solved: nearest reachable point
+};
+
+class WorldPlanner {
+ public:
+  /// `map` is the raw map (resolution = the finest); it is inflated by robot
+  /// radius + safety distance here (preprocessing, once).
+  WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options);
+  WorldPlan plan(double x0, double y0, double x1, double y1);
+  /// A moving obstacle at (x, y) m of radius r m moving at (vx, vy) m/s.
+  void set_obstacle(int id, double x, double y, double r, double vx, double vy);
+  void remove_obstacle(int id);
+  /// True while the waypoints are still free of every obstacle.
+  bool still_valid(const WorldPlan& p) const;
+  const WorldGrid& map() const { return map_; }
+  const OccupancyGrid& inflated() const { return spike_->obstacles().base(); }
+  const OccupancyGrid& with_obstacles() const { return spike_->obstacles().grid(); }
+  const Quadtree& quadtree() const { return spike_->static_planner().quadtree(); }
+  const WorldPlannerOptions& options() const { return options_; }
+
+ private:
+  WorldGrid map_;
+  WorldPlannerOptions options_;
+  std::unique_ptr<DynamicSpike> spike_;
+};
+
+/// A map file: map_server YAML (it has an `image` key) or an mrt_sim world
+/// (rasterized at `resolution` m).
+WorldGrid load_any_map(const std::string& path, double resolution);
+
+}  // namespace mrt::spike

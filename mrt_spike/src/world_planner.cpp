@@ -1,0 +1,49 @@
+#include "mrt_spike/world_planner.h"
+
+#include "mrt_common/yaml_reader.h"
+
+namespace mrt::spike {
+
+WorldPlanner::WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options)
+    : map_(map), options_(options) {
+  const double inflation = (options.robot_radius + options.safety_distance) / map.frame.resolution;
+  spike_ = std::make_unique<DynamicSpike>(inflate(map.grid, inflation), inflation, options.horizon, options.spike);
+}
+
+WorldPlan WorldPlanner::plan(double x0, double y0, double x1, double y1) {
+  WorldPlan out;
+  const Cell s = map_.cell_at(x0, y0), g = map_.cell_at(x1, y1);
+  const PlanResult r = spike_->plan(s, g);
+  const GridFrame& f = map_.frame;
+  if (!r.solved) {
+    out.reason = r.reason;
+    out.nearest_x = f.origin_x + f.resolution * r.nearest.x;
+    out.nearest_y = f.origin_y + f.resolution * r.nearest.y;
+    return out;
+  }
+  out.solved = true;
+  out.waypoints = r.path;
+  out.length = r.length * f.resolution;
+  out.poses = to_poses(r.path, options_.spacing, f);
+  if (out.poses.size() == 1 && r.path.size() == 1) out.poses.front().yaw = 0.0;
+  return out;
+}
+
+void WorldPlanner::set_obstacle(int id, double x, double y, double r, double vx, double vy) {
+  const GridFrame& f = map_.frame;
+  spike_->obstacles().set(id, {(x - f.origin_x) / f.resolution, (y - f.origin_y) / f.resolution, r / f.resolution,
+                               vx / f.resolution, vy / f.resolution});
+}
+
+void WorldPlanner::remove_obstacle(int id) { spike_->obstacles().remove(id); }
+
+bool WorldPlanner::still_valid(const WorldPlan& p) const { return p.solved && spike_->still_valid(p.waypoints); }
+
+WorldGrid load_any_map(const std::string& path, double resolution) {
+  const mrt::common::YamlReader yr(path);
+  const YAML::Node root = yr.load(mrt::common::read_file(path, "cannot open file", 1 << 22));
+  if (root.IsMap() && root["image"]) return load_occupancy_map(path);
+  return load_world_map(path, resolution);
+}
+
+}  // namespace mrt::spike
