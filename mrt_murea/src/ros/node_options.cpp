@@ -101,4 +101,22 @@ Covariance3 odometry_covariance(const Pose2D& d, const NodeOptions& o) {
   return {sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st};
 }
 
+void to_base_frame(std::vector<Percept>& percepts, const Pose2D& mount) {
+  for (Percept& p : percepts) {
+    const Pose2D q = mount * Pose2D(p.distance * std::cos(p.bearing), p.distance * std::sin(p.bearing), 0.0);
+    p.distance = std::hypot(q.x, q.y);
+    p.bearing = std::atan2(q.y, q.x);
+  }
+}
+
+TrackResult track_frame(Tracker& tracker, std::optional<Pose2D>* last_odom, const Pose2D& odom,
+                        const std::vector<Percept>& percepts, const NodeOptions& o) {
+  if (*last_odom) {
+    const Pose2D delta = (*last_odom)->inverse() * odom;
+    tracker.predict(delta, odometry_covariance(delta, o));
+  }
+  *last_odom = odom;
+  return tracker.update(percepts);
+}
+
 }  // namespace mrt::murea::node
