@@ -21,7 +21,7 @@
 #include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common_ros/conversions.h"
-#include "mrt_sim/world.h"
+#include "mrt_murea/occupancy_map.h"
 #include "ros/node_options.h"
 
 namespace {
@@ -39,7 +39,7 @@ struct Stamped {
 class Evaluator {
  public:
   Evaluator(const mn::NodeOptions& o, const std::string& robot, std::ostream& out)
-      : opt_(o), map_(mrt::sim::load_world(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {}
+      : opt_(o), map_(mrt::murea::load_map(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {}
 
   void run(rosbag::Bag& bag) {
     const std::vector<std::string> topics{ns_ + "/percepts", ns_ + "/odom", ns_ + "/ground_truth", "/tf", "/tf_static"};
