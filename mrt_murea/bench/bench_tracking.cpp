@@ -74,11 +74,15 @@ struct Stats {
   std::vector<double> search_ms;                  // MUREA: the search's part; MCL: frames the filter ran
   int globals = 0;
   double converged_s = -1;  // first time from which 1 s of estimates are all correct
+  double on_mirror = 0;     // fraction of frames on the field's half-turn mirror of the truth
 };
 
 // Accumulates the errors of a run of estimates.
 void finish(const Recording& rec, const std::vector<Pose2D>& est, const std::vector<bool>& valid, Stats* s) {
   const std::size_t n = est.size(), hold = static_cast<std::size_t>(1.0 / rec.dt);
+  for (std::size_t i = 0; i < n; ++i)
+    s->on_mirror += valid[i] && near(est[i], Pose2D(-rec.truth[i].x, -rec.truth[i].y, rec.truth[i].theta + kPi))
+                        ? 1.0 / n : 0.0;
   std::size_t from = n;
   for (std::size_t i = 0, run = 0; i < n; ++i) {
     run = valid[i] && near(est[i], rec.truth[i]) ? run + 1 : 0;
@@ -146,7 +150,8 @@ Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth) {
 void print(const std::string& name, const Stats& s) {
   double mean = 0;
   for (const double m : s.ms) mean += m / std::max<std::size_t>(1, s.ms.size());
-  std::cout << name << "_converged_after: " << s.converged_s << " s\n"
+  std::cout << name << "_converged_after: " << s.converged_s << " s (-1: never)\n"
+            << name << "_frames_on_the_mirror_pose: " << 100 * s.on_mirror << " %\n"
             << name << "_rmse_xy: " << 100 * s.rmse_xy << " cm\n"
             << name << "_rmse_theta: " << s.rmse_theta * 180 / kPi << " deg\n"
             << name << "_worst_xy: " << 100 * s.worst << " cm\n"
