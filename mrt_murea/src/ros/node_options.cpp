@@ -47,6 +47,14 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   ParamReader::check(t.max_window_theta >= t.min_window_theta && t.max_window_theta < 3.0, "max_window_theta",
                      "a number >= ~min_window_theta and < 3 rad");
   ParamReader::check(t.collapse_fraction <= 1.0, "collapse_fraction", "a number in [0, 1]");
+  RefineOptions& f = t.refine;
+  std::vector<double> sr{f.sigma_range_base, f.sigma_range_per_metre};
+  p.get("refine", f.enabled).get("refine_sigma_range", sr).get_non_negative("refine_sigma_bearing", f.sigma_bearing);
+  ParamReader::check(sr.size() == 2 && std::isfinite(sr[0]) && std::isfinite(sr[1]) && sr[0] >= 0 && sr[1] >= 0 &&
+                         sr[0] + sr[1] > 0,
+                     "refine_sigma_range", "[base_m, per_metre], two finite numbers >= 0, not both 0");
+  f.sigma_range_base = sr[0];
+  f.sigma_range_per_metre = sr[1];
   p.get("frame_prefix", o.frame_prefix).get("map_frame", o.map_frame).get("odom_frame", o.odom_frame);
   p.get("base_frame", o.base_frame).get("odom_topic", o.odom_topic).get("publish_tf", o.publish_tf);
   ParamReader::check(!o.map_frame.empty(), "map_frame", "a non-empty frame id");

@@ -15,7 +15,7 @@ namespace mrt::murea::node {
 
 struct NodeOptions {
   std::string map_file;             // ~map: mrt_sim world file (required)
-  TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse
+  TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse, ~refine*
   std::string frame_prefix;         // ~frame_prefix, e.g. "robot1/"
   std::string map_frame = "map";    // ~map_frame (global: not prefixed)
   std::string odom_frame = "odom";  // ~odom_frame (prefixed)
