@@ -125,6 +125,31 @@ TEST(MureaEval, OdometryTopicBag) { check(write_bag("murea_eval_odom.bag", true)
 
 TEST(MureaEval, TfBagWithCameraFrame) { check(write_bag("murea_eval_tf.bag", false)); }
 
+// murea_plot on murea_eval's output for the odometry-topic bag: the PNG
+// is written (its 8-byte signature), the same 40 estimates and, as above,
+// RMSE < 1 cm; murea_eval's CSV with its header removed is refused (line 1).
+TEST(MureaPlot, DrawsTheEvaluationOfABag) {
+  const std::string bag = write_bag("murea_plot.bag", true), csv = bag + ".csv", png = bag + ".png";
+  namespace t = mrt::common::testing;
+  ASSERT_EQ(t::run("'" MUREA_EVAL "' --map '" + kMap + "' --bag '" + bag + "' --robot r1 --out '" + csv +
+                   "' --timeout 0 >/dev/null 2>&1").code, 0);
+  const std::string plot = "/usr/bin/python3 '" MUREA_PLOT "' --bag '" + bag + "' --robot r1 --png '" + png + "'";
+  const auto r = t::run(plot + " --estimates '" + csv + "' 2>&1");
+  ASSERT_EQ(r.code, 0) << r.text;
+  EXPECT_NE(r.text.find("estimates: 40\n"), std::string::npos) << r.text;
+  EXPECT_GE(figure(r.text, "rmse_xy"), 0.0);
+  EXPECT_LT(figure(r.text, "rmse_xy"), 0.01) << r.text;
+  std::ifstream in(png, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  EXPECT_EQ(std::string(sig, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  const auto bad = t::run("tail -n +2 '" + csv + "' > '" + csv + ".bad'; " + plot + " --estimates '" + csv +
+                          ".bad' 2>&1 >/dev/null");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.text.find(".bad:1: expected the header"), std::string::npos) << bad.text;
+  EXPECT_EQ(t::run("/usr/bin/python3 '" MUREA_PLOT "' --help >/dev/null 2>&1").code, 0);
+}
+
 TEST(MureaEval, BadInput) {
   namespace t = mrt::common::testing;
   EXPECT_EQ(t::help(MUREA_EVAL).code, 0);
