@@ -54,14 +54,19 @@ DistanceGrid::DistanceGrid(std::vector<Segment> segments, double min_x, double m
   cells_.assign(static_cast<std::size_t>(nx_) * ny_, 0.0f);
   // Exact distance at every pixel centre. Row by row, each segment's
   // squared distance is a function of x only, so the inner loop is cheap.
+  nearest_.assign(cells_.size(), 0);
   std::vector<double> best(nx_);
   for (int j = 0; j < ny_; ++j) {
     const double y = min_y_ + (j + 0.5) * res_;
     std::fill(best.begin(), best.end(), std::numeric_limits<double>::infinity());
-    for (const Segment& s : segments_)
+    std::uint32_t* arg = &nearest_[static_cast<std::size_t>(j) * nx_];
+    for (std::size_t k = 0; k < segments_.size(); ++k)
       for (int i = 0; i < nx_; ++i) {
-        const double d2 = segment_distance2(min_x_ + (i + 0.5) * res_, y, s);
-        if (d2 < best[i]) best[i] = d2;
+        const double d2 = segment_distance2(min_x_ + (i + 0.5) * res_, y, segments_[k]);
+        if (d2 < best[i]) {
+          best[i] = d2;
+          arg[i] = static_cast<std::uint32_t>(k);
+        }
       }
     for (int i = 0; i < nx_; ++i) cells_[static_cast<std::size_t>(j) * nx_ + i] = static_cast<float>(std::sqrt(best[i]));
   }
@@ -71,6 +76,30 @@ double DistanceGrid::exact(double x, double y) const {
   double best = std::numeric_limits<double>::infinity();
   for (const Segment& s : segments_) best = std::min(best, segment_distance2(x, y, s));
   return std::sqrt(best);
+}
+
+Point2D DistanceGrid::nearest(double x, double y, double* nx, double* ny) const {
+  const Segment* arg = nullptr;
+  const double fx = (x - min_x_) * inv_res_, fy = (y - min_y_) * inv_res_;
+  if (fx >= 0.0 && fy >= 0.0 && fx < nx_ && fy < ny_) {
+    arg = &segments_[nearest_[static_cast<std::size_t>(fy) * nx_ + static_cast<std::size_t>(fx)]];
+  } else {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Segment& s : segments_) {
+      const double d2 = segment_distance2(x, y, s);
+      if (d2 < best) {
+        best = d2;
+        arg = &s;
+      }
+    }
+  }
+  const double ex = arg->b.x - arg->a.x, ey = arg->b.y - arg->a.y, len2 = ex * ex + ey * ey;
+  double t = len2 > 0.0 ? ((x - arg->a.x) * ex + (y - arg->a.y) * ey) / len2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  const double len = std::sqrt(len2);
+  *nx = len > 0.0 ? -ey / len : 1.0;
+  *ny = len > 0.0 ? ex / len : 0.0;
+  return {arg->a.x + t * ex, arg->a.y + t * ey};
 }
 
 double DistanceGrid::at(double x, double y) const {
@@ -86,6 +115,17 @@ double Layer::distance(double x, double y) const {
   double best = std::numeric_limits<double>::infinity();
   for (const Point2D& p : points) best = std::min(best, (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y));
   return std::sqrt(best);
+}
+
+Point2D Layer::nearest(double x, double y, bool* line, double* nx, double* ny) const {
+  *line = grid != nullptr;
+  *nx = 1.0;
+  *ny = 0.0;
+  if (grid) return grid->nearest(x, y, nx, ny);
+  const Point2D* best = &points.front();
+  for (const Point2D& p : points)
+    if (std::hypot(p.x - x, p.y - y) < std::hypot(best->x - x, best->y - y)) best = &p;
+  return *best;
 }
 
 FeatureMap::FeatureMap(const mrt::sim::World& world, const MapOptions& o)

@@ -23,7 +23,7 @@
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
-#include "mrt_sim/world.h"
+#include "mrt_murea/occupancy_map.h"
 #include "ros/markers.h"
 #include "ros/node_options.h"
 
@@ -36,7 +36,7 @@ class MureaNode {
  public:
   MureaNode(ros::NodeHandle& nh, const ros::NodeHandle& pnh)
       : opt_(read_options(pnh)),
-        map_(mrt::sim::load_world(opt_.map_file)),
+        map_(mrt::murea::load_map(opt_.map_file)),
         tracker_(map_, opt_.tracker),
         odom_frame_(opt_.frame_prefix + opt_.odom_frame),
         base_frame_(opt_.frame_prefix + opt_.base_frame),
@@ -108,25 +108,16 @@ class MureaNode {
       return;
     }
     std::vector<Percept> ps = to_percepts(msg, drops_);
-    for (Percept& p : ps) {  // into base_link
-      const Pose2D q = *mount * Pose2D(p.distance * std::cos(p.bearing), p.distance * std::sin(p.bearing), 0.0);
-      p.distance = std::hypot(q.x, q.y);
-      p.bearing = std::atan2(q.y, q.x);
-    }
+    to_base_frame(ps, *mount);
     const std::optional<Pose2D> odom = odom_at(msg.header.stamp);
     if (!odom) {
       ++no_odom_;
       ROS_WARN_THROTTLE(5.0, "murea: no odometry (%s -> %s): frame skipped", odom_frame_.c_str(), base_frame_.c_str());
       return;
     }
-    if (last_odom_) {
-      const Pose2D delta = last_odom_->inverse() * *odom;
-      tracker_.predict(delta, odometry_covariance(delta, opt_));
-    }
-    last_odom_ = odom;
     last_percepts_ = ps;
     const auto t0 = std::chrono::steady_clock::now();
-    const TrackResult r = tracker_.update(ps);
+    const TrackResult r = track_frame(tracker_, &last_odom_, *odom, ps, opt_);
     last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (r.mode == TrackMode::Tracking) {
       if (tracked_ms_.size() >= 1000) tracked_ms_.erase(tracked_ms_.begin());

@@ -86,6 +86,17 @@ std::array<double, 2> Tracker::heading_window() const {
   return {pose_.theta - h, pose_.theta + h};
 }
 
+bool Tracker::refine_pose(const Localizer& loc, const std::vector<Percept>& percepts, bool with_prior,
+                          const Pose2D* prior, const Covariance3* prior_cov) {
+  if (!opt_.refine.enabled) return false;
+  const Refined f = refine(loc, percepts, pose_, with_prior ? prior : nullptr, with_prior ? prior_cov : nullptr,
+                           opt_.refine);
+  if (!f.ok) return false;
+  pose_ = f.pose;
+  cov_ = f.covariance;
+  return true;
+}
+
 TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double total) {
   TrackResult out;
   out.mode = TrackMode::Global;
@@ -101,14 +112,16 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
     out.covariance = cov_;
     return out;
   }
-  pose_ = r.complete ? r.estimate.mean : r.best.pose;
   if (r.complete) {
+    pose_ = r.estimate.mean;
     cov_ = r.estimate.covariance;
   } else {  // anytime result: as uncertain as the largest window
+    pose_ = r.best.pose;
     cov_ = {};
     cov_[0] = cov_[4] = std::pow(opt_.max_window_xy / opt_.window_sigmas, 2);
     cov_[8] = std::pow(opt_.max_window_theta / opt_.window_sigmas, 2);
   }
+  out.refined = refine_pose(loc, percepts, false);
   tracking_ = true;
   collapsed_frames_ = 0;
   out.pose = pose_;
@@ -135,14 +148,18 @@ TrackResult Tracker::update(const std::vector<Percept>& percepts) {
     if (++collapsed_frames_ >= opt_.collapse_frames) tracking_ = false;  // kidnapped: global next
   } else {
     collapsed_frames_ = 0;
-    pose_ = r.complete ? r.estimate.mean : r.best.pose;
+    const Pose2D predicted = pose_;
+    const Covariance3 predicted_cov = cov_;
     if (r.complete) {
+      pose_ = r.estimate.mean;
       cov_ = r.estimate.covariance;
     } else {  // anytime result: keep the prediction's uncertainty
+      pose_ = r.best.pose;
       const auto w = window();
       cov_[0] = std::max(cov_[0], std::pow((w[2] - w[0]) / 2 / opt_.window_sigmas, 2));
       cov_[4] = std::max(cov_[4], cov_[0]);
     }
+    out.refined = refine_pose(loc, percepts, true, &predicted, &predicted_cov);
   }
   out.lost = !tracking_;
   out.pose = pose_;

@@ -73,7 +73,9 @@ TEST(Tracker, CovariancePropagationByHand) {
 TEST(Tracker, FollowsAKnownMotion) {
   const mrt::sim::World w = field();
   const FeatureMap map(w);
-  Tracker t(map, TrackerOptions{});
+  TrackerOptions opt;
+  opt.refine.enabled = false;  // the plateau's estimate (the fit: RefinedTrackingIsExact)
+  Tracker t(map, opt);
   Pose2D truth(-5, 1, 2.8);
   const TrackResult g = t.update(percepts_at(w, truth));
   EXPECT_EQ(g.mode, TrackMode::Global);
@@ -214,4 +216,58 @@ TEST(Tracker, AmbiguousGlobalResultIsNotTrackedByDefault) {
   Tracker t2(map, o);
   EXPECT_FALSE(t2.update(lines).lost);
   EXPECT_TRUE(t2.tracking());
+}
+
+// The same motion with the least-squares fit (the default): the noise-free
+// percepts lie exactly on their features at the true pose (the simulator
+// samples the loader's segments), so the fit's optimum is the truth, with
+// zero residuals; odometry is exact too, so every tracked pose is the
+// truth to well under a millimetre (the plateau's mean above: centimetres).
+TEST(Tracker, RefinedTrackingIsExact) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  Pose2D truth(-5, 1, 2.8);
+  EXPECT_TRUE(t.update(percepts_at(w, truth)).refined);
+  const Pose2D step(0.3, 0.05, 0.1);
+  for (int i = 0; i < 10; ++i) {
+    truth = truth * step;
+    t.predict(step, diag(0.0004, 0.0004, deg_to_rad(1) * deg_to_rad(1)));
+    const TrackResult r = t.update(percepts_at(w, truth));
+    EXPECT_TRUE(r.refined) << i;
+    EXPECT_NEAR(r.pose.x, truth.x, 1e-4) << i;
+    EXPECT_NEAR(r.pose.y, truth.y, 1e-4) << i;
+    EXPECT_NEAR(angle_diff(r.pose.theta, truth.theta), 0.0, 1e-5) << i;
+    // The fit's covariance: far below the plateau's (cm), still positive.
+    EXPECT_GT(r.covariance[0], 0.0);
+    EXPECT_LT(r.covariance[0], 0.01 * 0.01);
+  }
+}
+
+// refine() alone: from a start 3 cm, -2 cm and 1 degree off the truth the
+// fit returns the truth (zero residuals there, see above); with a prior at
+// the start of variance 1e-10 (sd 10 um) it stays at the prior (the
+// prior's information outweighs the percepts' by orders of magnitude); two
+// percepts give too few constraints: not ok, the start is kept.
+TEST(Refine, FitsThePerceptsAndTheirPrior) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  const Localizer loc(map, SearchOptions{});
+  const Pose2D truth(-5, 1, 2.8), start = truth * Pose2D(0.03, -0.02, deg_to_rad(1));
+  const std::vector<Percept> ps = percepts_at(w, truth);
+  const Refined a = refine(loc, ps, start, nullptr, nullptr, RefineOptions{});
+  ASSERT_TRUE(a.ok);
+  EXPECT_EQ(a.inliers, ps.size());
+  EXPECT_NEAR(a.pose.x, truth.x, 1e-4);
+  EXPECT_NEAR(a.pose.y, truth.y, 1e-4);
+  EXPECT_NEAR(angle_diff(a.pose.theta, truth.theta), 0.0, 1e-5);
+  const Covariance3 tight = diag(1e-10, 1e-10, 1e-10);
+  const Refined b = refine(loc, ps, start, &start, &tight, RefineOptions{});
+  ASSERT_TRUE(b.ok);
+  EXPECT_NEAR(b.pose.x, start.x, 1e-3);
+  EXPECT_NEAR(b.pose.y, start.y, 1e-3);
+  const std::vector<Percept> two(ps.begin(), ps.begin() + 2);
+  const Refined c = refine(loc, two, start, nullptr, nullptr, RefineOptions{});
+  EXPECT_FALSE(c.ok);
+  EXPECT_EQ(c.pose.x, start.x);
 }

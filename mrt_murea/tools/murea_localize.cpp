@@ -10,7 +10,7 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_murea/percept_csv.h"
 #include "mrt_common/cli.h"
-#include "mrt_sim/world.h"
+#include "mrt_murea/occupancy_map.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"MUREA global localization: one pose per percept frame", "murea_localize"};
@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", timeout, "seconds per frame (0 = no limit), default 1");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
-    const mrt::sim::World world = mrt::sim::load_world(map_file);
+    const mrt::sim::World world = mrt::murea::load_map(map_file);
     const auto frames = mrt::murea::load_percept_csv(percept_file);
     mrt::murea::SearchOptions opt;
     opt.accuracy_xy = accuracy[0];

@@ -3,6 +3,7 @@
 // O(1) to query (ROS-free).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ class DistanceGrid {
                double max_y, double resolution);
   double at(double x, double y) const;
   double exact(double x, double y) const;
+  /// The point closest to (x, y) of the segment nearest to the centre of
+  /// the pixel containing (x, y) (of the nearest segment, outside the
+  /// grid), and that segment's unit normal in *nx, *ny. Requires !empty().
+  Point2D nearest(double x, double y, double* nx, double* ny) const;
   double slack() const { return slack_; }
   bool empty() const { return segments_.empty(); }
   int width() const { return nx_; }
@@ -48,6 +53,7 @@ class DistanceGrid {
  private:
   std::vector<mrt::sim::Segment> segments_;
   std::vector<float> cells_;
+  std::vector<std::uint32_t> nearest_;  // index of the nearest segment, per pixel
   double min_x_ = 0, min_y_ = 0, res_ = 1, inv_res_ = 1, slack_ = 0;
   int nx_ = 0, ny_ = 0;
 };
@@ -69,6 +75,10 @@ struct Layer {
   /// Distance function of the layer (the grid's, or the exact distance to
   /// the nearest point); +infinity for an empty layer.
   double distance(double x, double y) const;
+  /// The nearest feature point to (x, y): the closest point of the nearest
+  /// segment (a segment layer; *line true, (*nx, *ny) its unit normal) or
+  /// the nearest point (*line false). Requires !empty().
+  Point2D nearest(double x, double y, bool* line, double* nx, double* ny) const;
   /// The Lipschitz slack of distance(): the grid's, 0 for points.
   double slack() const { return grid ? grid->slack() : 0.0; }
   bool empty() const { return grid ? grid->empty() : points.empty(); }

@@ -9,10 +9,9 @@
 #include <vector>
 
 #include "mrt_murea/localizer.h"
+#include "mrt_murea/refine.h"
 
 namespace mrt::murea {
-
-using Covariance3 = std::array<double, 9>;  // row-major x, y, theta
 
 struct TrackerOptions {
   SearchOptions search;            // global search (and lattice, tolerances) options
@@ -30,6 +29,10 @@ struct TrackerOptions {
   /// least collapse_fraction of the percepts' total and, unless this is
   /// true, it is not ambiguous; else the next frame is searched globally too.
   bool track_ambiguous = false;
+  /// After each accepted search, the pose is fitted to the matched
+  /// percepts by least squares, fused with odometry's prediction while
+  /// tracking (refine.h); disable to keep the plateau's mean.
+  RefineOptions refine;
 };
 
 enum class TrackMode { Global, Tracking };
@@ -42,6 +45,7 @@ struct TrackResult {
   double max_evidence = 0.0;  // total reliability of the usable percepts
   bool collapsed = false;     // this frame's evidence was below the fraction
   bool lost = false;          // no accepted pose after this frame (pose is the last one)
+  bool refined = false;       // the pose is the least-squares fit (refine.h)
 };
 
 class Tracker {
@@ -71,6 +75,10 @@ class Tracker {
 
  private:
   TrackResult global_update(const std::vector<Percept>& percepts, double max_evidence);
+  /// Replaces pose_ and cov_ (the search's estimate) by the least-squares
+  /// fit, fused with the prediction when with_prior; false if not refined.
+  bool refine_pose(const Localizer& loc, const std::vector<Percept>& percepts, bool with_prior,
+                   const Pose2D* prior = nullptr, const Covariance3* prior_cov = nullptr);
 
   const FeatureMap& map_;
   TrackerOptions opt_;

@@ -47,6 +47,14 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   ParamReader::check(t.max_window_theta >= t.min_window_theta && t.max_window_theta < 3.0, "max_window_theta",
                      "a number >= ~min_window_theta and < 3 rad");
   ParamReader::check(t.collapse_fraction <= 1.0, "collapse_fraction", "a number in [0, 1]");
+  RefineOptions& f = t.refine;
+  std::vector<double> sr{f.sigma_range_base, f.sigma_range_per_metre};
+  p.get("refine", f.enabled).get("refine_sigma_range", sr).get_non_negative("refine_sigma_bearing", f.sigma_bearing);
+  ParamReader::check(sr.size() == 2 && std::isfinite(sr[0]) && std::isfinite(sr[1]) && sr[0] >= 0 && sr[1] >= 0 &&
+                         sr[0] + sr[1] > 0,
+                     "refine_sigma_range", "[base_m, per_metre], two finite numbers >= 0, not both 0");
+  f.sigma_range_base = sr[0];
+  f.sigma_range_per_metre = sr[1];
   p.get("frame_prefix", o.frame_prefix).get("map_frame", o.map_frame).get("odom_frame", o.odom_frame);
   p.get("base_frame", o.base_frame).get("odom_topic", o.odom_topic).get("publish_tf", o.publish_tf);
   ParamReader::check(!o.map_frame.empty(), "map_frame", "a non-empty frame id");
@@ -99,6 +107,24 @@ Covariance3 odometry_covariance(const Pose2D& d, const NodeOptions& o) {
   const double sxy = o.odom_alpha_xy * dist;
   const double st = o.odom_alpha_theta * turn + o.odom_alpha_theta_xy * dist;
   return {sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st};
+}
+
+void to_base_frame(std::vector<Percept>& percepts, const Pose2D& mount) {
+  for (Percept& p : percepts) {
+    const Pose2D q = mount * Pose2D(p.distance * std::cos(p.bearing), p.distance * std::sin(p.bearing), 0.0);
+    p.distance = std::hypot(q.x, q.y);
+    p.bearing = std::atan2(q.y, q.x);
+  }
+}
+
+TrackResult track_frame(Tracker& tracker, std::optional<Pose2D>* last_odom, const Pose2D& odom,
+                        const std::vector<Percept>& percepts, const NodeOptions& o) {
+  if (*last_odom) {
+    const Pose2D delta = (*last_odom)->inverse() * odom;
+    tracker.predict(delta, odometry_covariance(delta, o));
+  }
+  *last_odom = odom;
+  return tracker.update(percepts);
 }
 
 }  // namespace mrt::murea::node

@@ -5,6 +5,7 @@
 #include <ros/node_handle.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace mrt::murea::node {
 
 struct NodeOptions {
   std::string map_file;             // ~map: mrt_sim world file (required)
-  TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse
+  TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse, ~refine*
   std::string frame_prefix;         // ~frame_prefix, e.g. "robot1/"
   std::string map_frame = "map";    // ~map_frame (global: not prefixed)
   std::string odom_frame = "odom";  // ~odom_frame (prefixed)
@@ -42,5 +43,15 @@ std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops
 
 /// Odometry covariance of a relative motion (amcl-like alphas).
 Covariance3 odometry_covariance(const Pose2D& delta, const NodeOptions& o);
+
+/// Re-expresses percepts seen from a sensor frame mounted at `mount` (its
+/// pose in base_link) in base_link.
+void to_base_frame(std::vector<Percept>& percepts, const Pose2D& mount);
+
+/// One percept frame through the pipeline of murea_node (and murea_eval):
+/// odometry's motion since *last_odom predicts (none on the first frame),
+/// then the percepts (in base_link) update; *last_odom becomes `odom`.
+TrackResult track_frame(Tracker& tracker, std::optional<Pose2D>* last_odom, const Pose2D& odom,
+                        const std::vector<Percept>& percepts, const NodeOptions& o);
 
 }  // namespace mrt::murea::node

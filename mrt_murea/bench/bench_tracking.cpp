@@ -1,0 +1,239 @@
+// murea_bench, part 2: tracking along a figure eight, kidnapping, and the
+// MCL (amcl algorithm) baseline on the same recordings.
+#include <chrono>
+#include <iostream>
+
+#include "bench_common.h"
+#include "mcl.h"
+#include "mrt_murea/tracker.h"
+
+namespace mrt::murea::bench {
+
+using mrt::common::angle_diff;
+using mrt::common::kPi;
+
+namespace {
+
+// One recorded run: the true pose, odometry's motion from the previous
+// frame (robot frame) with its covariance, and the frame's percepts.
+struct Recording {
+  double dt = 1.0 / 30.0;
+  std::vector<Pose2D> truth;
+  std::vector<Pose2D> odom;
+  std::vector<Covariance3> odom_cov;
+  std::vector<std::vector<Percept>> percepts;
+  double max_speed = 0, max_turn = 0;
+};
+
+// The robot runs a figure eight over the field (x = 6 sin(wt), y = 3
+// sin(2wt), w = 0.4 rad/s: up to 3.4 m/s), its heading the direction of
+// travel plus 0.6 sin(1.3 t) (omnidirectional base, turns up to about 2
+// rad/s); 30 Hz percept frames with the simulator's noise (2 % of the
+// distance, 0.01 rad, 6 m, 10 spurious points); odometry = the true motion
+// between frames with 3 % translation and 2 % + 0.01 rad/m heading noise.
+// `outliers`: that fraction of each frame's percepts moved to a random
+// distance (0.5 to 6 m) and bearing.
+Recording figure_eight(const mrt::sim::World& world, double seconds, double outliers, bool colours) {
+  std::mt19937_64 rng(15);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double w = 0.4;
+  Recording rec;
+  auto truth_at = [&](double t) {
+    const double vx = 6 * w * std::cos(w * t), vy = 6 * w * std::cos(2 * w * t);
+    return Pose2D(6 * std::sin(w * t), 3 * std::sin(2 * w * t), std::atan2(vy, vx) + 0.6 * std::sin(1.3 * t));
+  };
+  const int frames = static_cast<int>(seconds / rec.dt);
+  Pose2D prev = truth_at(0.0);
+  for (int i = 0; i <= frames; ++i) {
+    const Pose2D truth = truth_at(i * rec.dt);
+    const Pose2D d = prev.inverse() * truth;
+    rec.max_speed = std::max(rec.max_speed, std::hypot(d.x, d.y) / rec.dt);
+    rec.max_turn = std::max(rec.max_turn, std::abs(d.theta) / rec.dt);
+    const double dist = std::hypot(d.x, d.y), st = 0.02 * std::abs(d.theta) + 0.01 * dist;
+    rec.odom.emplace_back(d.x * (1 + 0.03 * n01(rng)), d.y * (1 + 0.03 * n01(rng)), d.theta + st * n01(rng));
+    const double sxy = 0.03 * dist + 1e-4;
+    rec.odom_cov.push_back({sxy * sxy, 0, 0, 0, sxy * sxy, 0, 0, 0, st * st + 1e-8});
+    prev = truth;
+    Noise nz{6.0, 0.0, 0.02, 0.01, 10, colours};
+    std::vector<Percept> ps = simulate(world, truth, nz, rng);
+    for (Percept& p : ps)
+      if (u01(rng) < outliers) {
+        p.distance = 0.5 + 5.5 * u01(rng);
+        p.bearing = kPi * (2 * u01(rng) - 1);
+      }
+    rec.truth.push_back(truth);
+    rec.percepts.push_back(std::move(ps));
+  }
+  return rec;
+}
+
+struct Stats {
+  double rmse_xy = 0, rmse_theta = 0, worst = 0;  // over frames from convergence on
+  std::vector<double> ms;                         // cost of every frame
+  std::vector<double> search_ms;                  // MUREA: the search's part; MCL: frames the filter ran
+  int globals = 0;
+  double converged_s = -1;  // first time from which 1 s of estimates are all correct
+  double on_mirror = 0;     // fraction of frames on the field's half-turn mirror of the truth
+};
+
+// Accumulates the errors of a run of estimates.
+void finish(const Recording& rec, const std::vector<Pose2D>& est, const std::vector<bool>& valid, Stats* s) {
+  const std::size_t n = est.size(), hold = static_cast<std::size_t>(1.0 / rec.dt);
+  for (std::size_t i = 0; i < n; ++i)
+    s->on_mirror += valid[i] && near(est[i], Pose2D(-rec.truth[i].x, -rec.truth[i].y, rec.truth[i].theta + kPi))
+                        ? 1.0 / n : 0.0;
+  std::size_t from = n;
+  for (std::size_t i = 0, run = 0; i < n; ++i) {
+    run = valid[i] && near(est[i], rec.truth[i]) ? run + 1 : 0;
+    if (run > hold) {
+      from = i - run + 1;
+      break;
+    }
+  }
+  if (from == n) return;
+  s->converged_s = from * rec.dt;
+  double d2 = 0, t2 = 0;
+  for (std::size_t i = from; i < n; ++i) {
+    const double e = std::hypot(est[i].x - rec.truth[i].x, est[i].y - rec.truth[i].y);
+    const double et = angle_diff(est[i].theta, rec.truth[i].theta);
+    d2 += e * e;
+    t2 += et * et;
+    s->worst = std::max(s->worst, e);
+  }
+  s->rmse_xy = std::sqrt(d2 / (n - from));
+  s->rmse_theta = std::sqrt(t2 / (n - from));
+}
+
+// MUREA's tracker over a recording, from the true pose or from no prior.
+Stats run_murea(const FeatureMap& map, const Recording& rec, bool from_truth, bool refine) {
+  TrackerOptions opt;
+  opt.refine.enabled = refine;
+  Tracker tracker(map, opt);
+  if (from_truth) tracker.set_pose(rec.truth[0], {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4});
+  Stats s;
+  std::vector<Pose2D> est;
+  std::vector<bool> valid;
+  for (std::size_t i = 0; i < rec.truth.size(); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (i > 0) tracker.predict(rec.odom[i], rec.odom_cov[i]);
+    const TrackResult r = tracker.update(rec.percepts[i]);
+    s.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    s.globals += r.mode == TrackMode::Global ? 1 : 0;
+    s.search_ms.push_back(r.search.time_ms);
+    est.push_back(r.pose);
+    valid.push_back(!r.lost);
+  }
+  finish(rec, est, valid, &s);
+  return s;
+}
+
+// The MCL baseline over the same recording (amcl's initial covariance
+// around the true pose, or global_localization's uniform particles).
+Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth) {
+  Mcl mcl(map, MclOptions{}, 4242);
+  if (from_truth) mcl.set_pose(rec.truth[0]);
+  else mcl.global_init();
+  Stats s;
+  std::vector<Pose2D> est;
+  for (std::size_t i = 0; i < rec.truth.size(); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool ran = mcl.frame(i > 0 ? rec.odom[i] : Pose2D(), rec.percepts[i]);
+    s.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    if (ran) s.search_ms.push_back(s.ms.back());
+    est.push_back(mcl.estimate());
+  }
+  finish(rec, est, std::vector<bool>(est.size(), true), &s);
+  return s;
+}
+
+void print(const std::string& name, const Stats& s) {
+  double mean = 0;
+  for (const double m : s.ms) mean += m / std::max<std::size_t>(1, s.ms.size());
+  std::cout << name << "_converged_after: " << s.converged_s << " s (-1: never)\n"
+            << name << "_frames_on_the_mirror_pose: " << 100 * s.on_mirror << " %\n"
+            << name << "_rmse_xy: " << 100 * s.rmse_xy << " cm\n"
+            << name << "_rmse_theta: " << s.rmse_theta * 180 / kPi << " deg\n"
+            << name << "_worst_xy: " << 100 * s.worst << " cm\n"
+            << name << "_update_median: " << percentile(s.ms, 0.5) << " ms\n"
+            << name << "_update_p95: " << percentile(s.ms, 0.95) << " ms\n"
+            << name << "_update_mean: " << mean << " ms\n";
+  const bool mcl = name.find("mcl") != std::string::npos;
+  const std::string part = mcl ? "_filter_update" : "_search";
+  std::cout << name << part << "_median: " << percentile(s.search_ms, 0.5) << " ms\n"
+            << name << part << "_p95: " << percentile(s.search_ms, 0.95) << " ms\n";
+  if (mcl) std::cout << name << "_filter_updates: " << s.search_ms.size() << " count\n";
+  if (s.globals) std::cout << name << "_global_searches: " << s.globals << " count\n";
+}
+
+// Kidnapping: 100 trials; tracking at a random pose, the robot is carried
+// to another random pose (no odometry) and stands there; 30 Hz frames of
+// the simulator's percepts with their colours (named goals, coloured
+// corner posts); recovered = the estimate within 0.3 m / 10 deg of the new
+// pose within 30 frames (1 s). Counted separately: the trials whose new
+// pose sees a coloured goal, goal post or corner post (the colours
+// available), the others being genuinely symmetric.
+void kidnap_run(const mrt::sim::World& world, const FeatureMap& map) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> ux(-8.5, 8.5), uy(-5.5, 5.5), ut(-kPi, kPi);
+  const Noise nz{6.0, 0.0, 0.02, 0.01, 0, true};
+  int recovered = 0, lost = 0, wrong = 0, ambiguous = 0, coloured = 0, coloured_recovered = 0;
+  std::vector<double> frames_needed;
+  for (int trial = 0; trial < 100; ++trial) {
+    Tracker t(map, TrackerOptions{});
+    const Pose2D a(ux(rng), uy(rng), ut(rng)), b(ux(rng), uy(rng), ut(rng));
+    t.set_pose(a, {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4});
+    TrackResult r;
+    bool colour_seen = false, ok = false;
+    for (int i = 0; i < 30 && !ok; ++i) {
+      const std::vector<Percept> ps = simulate(world, b, nz, rng);
+      for (const Percept& p : ps) colour_seen = colour_seen || (p.cls != FeatureClass::Line && !p.color.empty());
+      r = t.update(ps);
+      ok = !r.lost && near(r.pose, b);
+      if (ok) frames_needed.push_back(i + 1);
+    }
+    recovered += ok;
+    coloured += colour_seen;
+    coloured_recovered += colour_seen && ok;
+    if (ok) continue;
+    if (r.lost) {
+      ++lost;
+      ambiguous += r.search.ambiguous &&
+                   (near(r.search.best.pose, b) || (r.search.alternative && near(r.search.alternative->pose, b)));
+    } else {
+      ++wrong;
+    }
+  }
+  std::cout << "kidnap_recovered_within_1s: " << recovered << " %\n"
+            << "kidnap_trials_with_colours_in_view: " << coloured << " count\n"
+            << "kidnap_recovered_within_1s_with_colours_in_view: " << 100.0 * coloured_recovered / std::max(1, coloured)
+            << " %\n"
+            << "kidnap_still_lost_after_1s: " << lost << " % (" << ambiguous
+            << " % ambiguous, the pose one of the two modes)\n"
+            << "kidnap_tracking_a_wrong_pose_after_1s: " << wrong << " %\n"
+            << "kidnap_frames_median: " << percentile(frames_needed, 0.5) << " frames\n"
+            << "kidnap_frames_p95: " << percentile(frames_needed, 0.95) << " frames\n";
+}
+
+}  // namespace
+
+void tracking_benchmarks(const mrt::sim::World& world, const FeatureMap& map, double seconds) {
+  const Recording rec = figure_eight(world, seconds, 0.0, false);
+  std::cout << "tracking_frames: " << rec.truth.size() << " count\n"
+            << "tracking_max_speed: " << rec.max_speed << " m/s\n"
+            << "tracking_max_turn_rate: " << rec.max_turn << " rad/s\n";
+  print("tracking", run_murea(map, rec, true, true));
+  print("tracking_plateau_only", run_murea(map, rec, true, false));
+  print("tracking_mcl", run_mcl(map, rec, true));
+  const Recording outl = figure_eight(world, seconds, 0.3, false);
+  print("tracking_outliers30", run_murea(map, outl, true, true));
+  print("tracking_outliers30_mcl", run_mcl(map, outl, true));
+  // Global convergence from no prior, percepts with colours (the field's
+  // symmetry is broken by the goals' and corner posts' colours).
+  const Recording col = figure_eight(world, seconds, 0.0, true);
+  print("global_run", run_murea(map, col, false, true));
+  print("global_run_mcl", run_mcl(map, col, false));
+  kidnap_run(world, map);
+}
+
+}  // namespace mrt::murea::bench
