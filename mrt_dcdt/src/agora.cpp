@@ -295,12 +295,12 @@ bool Agora::seen_before(const MsgHeader& h) {
   return false;
 }
 
-void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
+bool Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
   auto& h = msg->mutable_header();
   if (src.kind != Source::MEMBER) {
     if (h.agora_id == agora_id_ || seen_before(h)) {
       ++duplicates_;  // our own message came back, or a copy by another path
-      return;
+      return true;
     }
     if (src.kind == Source::CHANNEL) {
       h.hops = static_cast<uint8_t>(h.hops + 1);
@@ -308,12 +308,12 @@ void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
     }
     if (h.hops > kMaxHops) {
       ++hop_limited_;
-      return;
+      return true;
     }
   }
   ++routed_;
   MsgPtr m = std::move(msg);
-  post_office_->post(m);
+  const bool delivered = post_office_->post(m);
   if (inner_ && src.kind != Source::INNER) inner_->send(*m);
   std::lock_guard<std::mutex> l(channels_mutex_);
   for (auto& ch : channels_) {
@@ -322,6 +322,7 @@ void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
         (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level))
       ch->send(m);
   }
+  return delivered;
 }
 
 void Agora::add_channel(std::unique_ptr<Channel> c) {
@@ -360,6 +361,7 @@ AgoraStats Agora::stats() {
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
   s.mailbox_dropped = post_office_->mailbox_drops();
+  s.guaranteed_refused = post_office_->guaranteed_refused();
   if (inner_) {
     s.peer_ids = inner_->peer_ids();
     s.inner_peers = static_cast<int>(s.peer_ids.size());

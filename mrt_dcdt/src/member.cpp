@@ -37,10 +37,10 @@ Msg* Member::create_msg(int type, int delivery_warranty) {
 
 Msg* Member::create_msg(int type) { return create_msg(type, DCDT_DW_GUARANTEED); }
 
-void Member::share_msg(Msg* msg) {
-  if (!msg) return;
+bool Member::share_msg(Msg* msg) {
+  if (!msg) return false;
   std::shared_ptr<Msg> owned(msg);
-  if (!agora_) return;
+  if (!agora_) return false;
   auto& h = owned->mutable_header();
   h.member_id = member_id_;
   h.agora_id = agora_->agora_id();
@@ -48,7 +48,7 @@ void Member::share_msg(Msg* msg) {
   h.remote = false;
   h.incarnation = agora_->incarnation();
   h.seq = agora_->next_seq();
-  agora_->route(std::move(owned), Source{Source::MEMBER, nullptr});
+  return agora_->route(std::move(owned), Source{Source::MEMBER, nullptr});
 }
 
 const Msg* Member::receive_msg() {

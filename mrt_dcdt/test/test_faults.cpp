@@ -283,4 +283,49 @@ TEST(InnerDirectory, ADirectoryWritableByOthersOrOwnedByAnotherUserIsRefused) {
   EXPECT_NO_THROW(Agora c(o));  // 0700, ours
 }
 
+// --- mailboxes: caps in bytes, guaranteed messages refused, never dropped ---
+
+MsgPtr sized(Agora& a, int warranty, int len, uint64_t seq) {
+  auto m = std::make_shared<Msg>(MSG_FROM_MAP, 99, a.agora_id(), warranty);
+  m->alloc_payload(len);
+  m->mutable_header().incarnation = a.incarnation();
+  m->mutable_header().seq = seq;
+  return m;
+}
+
+TEST(Mailboxes, CappedInBytesAndAGuaranteedMessageIsRefusedNeverDropped) {
+  DCDT_Agora agora(dcdt_test::IsolatedOptions());  // SLWB: the publisher is told at once
+  Reader r(&agora);
+  agora.add_member(&r);
+  r.SubscribeMsgType(MSG_FROM_MAP);
+  // 1 MiB guaranteed payloads cost 1 048 576 + 256 bytes each; the 64 MiB
+  // cap (67 108 864) holds 63 of them (66 076 416), not 64 (67 125 248).
+  int accepted = 0;
+  for (int i = 0; i < 70; ++i)
+    if (agora.route(std::const_pointer_cast<Msg>(sized(agora, DCDT_DW_GUARANTEED, 1 << 20, i + 1)), Source{})) ++accepted;
+  EXPECT_EQ(accepted, 63);
+  auto s = agora.stats();
+  EXPECT_EQ(s.guaranteed_refused, 7u);
+  EXPECT_EQ(s.mailbox_dropped, 0u);
+  // A 1 MiB message without warranty finds no room either (1 032 448 bytes
+  // free, nothing it may evict): dropped and counted.
+  EXPECT_TRUE(agora.route(std::const_pointer_cast<Msg>(sized(agora, DCDT_DW_NONE, 1 << 20, 100)), Source{}));
+  EXPECT_EQ(agora.stats().mailbox_dropped, 1u);
+  // One read frees 1 048 832 bytes (62 queued: 65 027 584): a 1 MiB message
+  // without warranty fits (66 076 416), then a guaranteed 1 MiB one
+  // (67 125 248 > cap) fits only by evicting it.
+  ASSERT_NE(r.ReceiveMsg(), nullptr);
+  EXPECT_TRUE(agora.route(std::const_pointer_cast<Msg>(sized(agora, DCDT_DW_NONE, 1 << 20, 101)), Source{}));
+  EXPECT_TRUE(agora.route(std::const_pointer_cast<Msg>(sized(agora, DCDT_DW_GUARANTEED, 1 << 20, 102)), Source{}));
+  s = agora.stats();
+  EXPECT_EQ(s.mailbox_dropped, 2u);
+  EXPECT_EQ(s.guaranteed_refused, 7u);
+  int left = 0;
+  while (const DCDT_Msg* m = r.ReceiveMsg()) {
+    EXPECT_EQ(m->ReadDeliveryWarranty(), DCDT_DW_GUARANTEED);
+    ++left;
+  }
+  EXPECT_EQ(left, 63);  // 62 of the first ones + the last
+}
+
 }  // namespace

@@ -205,7 +205,8 @@ class BridgeNode {
     uint64_t channel_errors = 0;
     for (const auto& c : a.channels) channel_errors += c.errors;
     const bool trouble = b.parse_errors > 0 || b.conversion_errors > 0 || b.dropped > 0 || a.mailbox_dropped > 0 ||
-                         a.hop_limited > 0 || a.inner_errors > 0 || a.inner_dropped > 0 || channel_errors > 0;
+                         a.hop_limited > 0 || a.inner_errors > 0 || a.inner_dropped > 0 || a.guaranteed_refused > 0 ||
+                         channel_errors > 0;
     st.level = trouble ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     st.message = peers > 0 ? "bridging" : "no peer Agora seen";
     if (peers == 0 && st.level == diagnostic_msgs::DiagnosticStatus::OK) st.level = diagnostic_msgs::DiagnosticStatus::WARN;
@@ -228,6 +229,7 @@ class BridgeNode {
     kv("conversion_errors", std::to_string(b.conversion_errors));
     kv("dropped", std::to_string(b.dropped));
     kv("mailbox_dropped", std::to_string(a.mailbox_dropped));
+    kv("guaranteed_refused", std::to_string(a.guaranteed_refused));
     kv("hop_limited", std::to_string(a.hop_limited));
     kv("inner_errors", std::to_string(a.inner_errors));
     kv("inner_dropped", std::to_string(a.inner_dropped));

@@ -42,7 +42,8 @@ struct AgoraStats {
   uint64_t duplicates = 0;       ///< copies recognised by origin (agora id, incarnation, seq) and dropped
   uint64_t hop_limited = 0;      ///< dropped after more than kMaxHops channels
   uint64_t inner_errors = 0;     ///< malformed or undeliverable inner-link datagrams
-  uint64_t mailbox_dropped = 0;  ///< discarded because a Member's mailbox was full
+  uint64_t mailbox_dropped = 0;  ///< non-guaranteed messages discarded because a Member's mailbox was full
+  uint64_t guaranteed_refused = 0;  ///< guaranteed messages a full mailbox refused (the sender was told under SLWB)
   uint64_t inner_dropped = 0;    ///< messages not delivered to a stalled local Agora (its queue was full)
   std::vector<int> inner_stalled_peers;  ///< local Agoras currently dropped from delivery
   int inner_peers = 0;
@@ -91,7 +92,8 @@ class Agora {
   const AgoraOptions& options() const { return options_; }
 
   // --- used by Members and system Members ---
-  void route(std::shared_ptr<Msg> msg, const Source& src);
+  /// False when a guaranteed message was refused by a full local mailbox.
+  bool route(std::shared_ptr<Msg> msg, const Source& src);
   int next_member_id() { return ++member_counter_; }
   uint64_t next_seq() { return ++seq_counter_; }
   void add_channel(std::unique_ptr<Channel> c);

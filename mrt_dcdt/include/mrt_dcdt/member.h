@@ -47,7 +47,9 @@ class Member {
   Msg* create_msg(int type, int delivery_warranty);
   Msg* create_msg(int type);
   /// Hands msg to the PostOffice (and the Agora's links); takes ownership.
-  void share_msg(Msg* msg);
+  /// False when a guaranteed message was refused by a full mailbox of this
+  /// Agora (SLWB; README "PostOffice policies").
+  bool share_msg(Msg* msg);
   /// Makes the oldest waiting message the current one and returns it
   /// (nullptr when none). The previous current message is released. The
   /// message is shared with the other receivers, so it is read-only.
