@@ -58,30 +58,44 @@ class DCDT_Member;
 
 /// DCDT_Msg (manual §3.3.3): a handle on an mrt::dcdt::Msg. One made by
 /// CreateMsg owns its message until ShareMsg (or delete); the one ReceiveMsg
-/// returns views the current message and belongs to the Member.
+/// returns views the current message and belongs to the Member. A received
+/// message is shared with the other receivers and read-only: the first
+/// GetPayload() / SetPayload() / AllocPayload() / SetPriority() through a
+/// non-const handle gives this Member its own copy (copy on write), so legacy
+/// code that writes into a received payload changes nobody else's message.
 class DCDT_Msg {
  public:
-  int ReadType() const { return msg_->type(); }
-  int ReadMemberID() const { return msg_->member_id(); }
-  int ReadAgoraID() const { return msg_->agora_id(); }
-  int ReadPriority() const { return msg_->priority(); }
-  int ReadDeliveryWarranty() const { return msg_->delivery_warranty(); }
-  DCDT_TIME ReadCreationTime() const { return msg_->creation_time(); }
-  int ReadPayloadLen() const { return msg_->payload_len(); }
-  void* GetPayload() { return msg_->payload(); }
-  const void* GetPayload() const { return static_cast<const mrt::dcdt::Msg*>(msg_)->payload(); }
-  void SetPayload(const void* data, int len) { msg_->set_payload(data, len); }
-  void* AllocPayload(int len) { return msg_->alloc_payload(len); }
-  void SetPriority(int p) { msg_->set_priority(p); }
+  int ReadType() const { return view_->type(); }
+  int ReadMemberID() const { return view_->member_id(); }
+  int ReadAgoraID() const { return view_->agora_id(); }
+  int ReadPriority() const { return view_->priority(); }
+  int ReadDeliveryWarranty() const { return view_->delivery_warranty(); }
+  DCDT_TIME ReadCreationTime() const { return view_->creation_time(); }
+  int ReadPayloadLen() const { return view_->payload_len(); }
+  void* GetPayload() { return writable().payload(); }
+  const void* GetPayload() const { return view_->payload(); }
+  void SetPayload(const void* data, int len) { writable().set_payload(data, len); }
+  void* AllocPayload(int len) { return writable().alloc_payload(len); }
+  void SetPriority(int p) { writable().set_priority(p); }
 
-  /// The message itself, for code that mixes both APIs.
-  mrt::dcdt::Msg& msg() { return *msg_; }
+  /// The message itself, for code that mixes both APIs (writable: a received
+  /// message is copied first).
+  mrt::dcdt::Msg& msg() { return writable(); }
+  const mrt::dcdt::Msg& msg() const { return *view_; }
 
  private:
   friend class DCDT_Member;
-  DCDT_Msg(mrt::dcdt::Msg* m, bool owned) : msg_(m), owned_(owned ? m : nullptr) {}
-  mrt::dcdt::Msg* msg_;
-  std::unique_ptr<mrt::dcdt::Msg> owned_;  // null for a received message
+  explicit DCDT_Msg(mrt::dcdt::Msg* created) : view_(created), owned_(created) {}
+  explicit DCDT_Msg(const mrt::dcdt::Msg* received) : view_(received) {}
+  mrt::dcdt::Msg& writable() {
+    if (!owned_) {
+      owned_ = std::make_unique<mrt::dcdt::Msg>(*view_);
+      view_ = owned_.get();
+    }
+    return *owned_;
+  }
+  const mrt::dcdt::Msg* view_;
+  std::unique_ptr<mrt::dcdt::Msg> owned_;  // created, or this Member's copy of a received one
 };
 
 /// DCDT_Member (manual §3.3.2): derive from it and override Init, Close and
@@ -101,24 +115,22 @@ class DCDT_Member : public mrt::dcdt::Member {
   void UnSubscribeMsgType(int type, DCDT_RequestType req = DCDT_ALL_MSG) { unsubscribe_msg_type(type, req); }
   void UnSubscribeAll() { unsubscribe_all(); }
 
-  DCDT_Msg* CreateMsg(int type, int delivery_warranty) {
-    return new DCDT_Msg(create_msg(type, delivery_warranty), true);
-  }
-  DCDT_Msg* CreateMsg(int type) { return new DCDT_Msg(create_msg(type), true); }
+  DCDT_Msg* CreateMsg(int type, int delivery_warranty) { return new DCDT_Msg(create_msg(type, delivery_warranty)); }
+  DCDT_Msg* CreateMsg(int type) { return new DCDT_Msg(create_msg(type)); }
   /// Shares a message made by CreateMsg (and deletes its handle), or a copy
   /// of the current received message.
   void ShareMsg(DCDT_Msg* msg) {
     if (!msg) return;
     if (msg == current_.get()) {
-      share_msg(new mrt::dcdt::Msg(*msg->msg_));
+      share_msg(new mrt::dcdt::Msg(*msg->view_));
       return;
     }
     std::unique_ptr<DCDT_Msg> handle(msg);
-    share_msg(handle->owned_ ? handle->owned_.release() : new mrt::dcdt::Msg(*handle->msg_));
+    share_msg(handle->owned_ ? handle->owned_.release() : new mrt::dcdt::Msg(*handle->view_));
   }
   DCDT_Msg* ReceiveMsg() {
-    mrt::dcdt::Msg* m = receive_msg();
-    current_.reset(m ? new DCDT_Msg(m, false) : nullptr);
+    const mrt::dcdt::Msg* m = receive_msg();
+    current_.reset(m ? new DCDT_Msg(m) : nullptr);
     return current_.get();
   }
   void RemoveCurrMsg() {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 
@@ -13,6 +15,9 @@
 namespace mrt::dcdt {
 
 namespace {
+std::atomic<unsigned> g_signals{0};  // lock-free: safe in a signal handler
+extern "C" void count_signal(int) { g_signals.fetch_add(1); }
+
 int random_agora_id() {
   std::random_device rd;
   uint32_t v = rd() ^ (static_cast<uint32_t>(::getpid()) << 16) ^
@@ -49,14 +54,21 @@ std::string default_inner_dir() {
 void Agora::setup() {
   agora_id_ = options_.agora_id > 0 ? options_.agora_id : random_agora_id();
   incarnation_ = random_incarnation();
+  signal_base_ = g_signals.load();
   options_.channel.agora_id = agora_id_;
   options_.channel.incarnation = incarnation_;
   post_office_ = PostOffice::create(options_.config.policy);
   post_office_->agora_id = agora_id_;
   if (options_.inner_links) {
     if (options_.inner_dir.empty()) options_.inner_dir = default_inner_dir();
+    InnerLinkOptions io;
+    io.dir = options_.inner_dir;
+    io.agora_id = agora_id_;
+    io.incarnation = incarnation_;
+    io.socket_buffer = options_.inner_socket_buffer;
+    io.queue_bytes = options_.inner_queue_bytes;
     inner_ = std::make_unique<InnerLinkManager>(
-        options_.inner_dir, agora_id_, [this](std::shared_ptr<Msg> m) { route(std::move(m), Source{Source::INNER, nullptr}); });
+        std::move(io), [this](std::shared_ptr<Msg> m) { route(std::move(m), Source{Source::INNER, nullptr}); });
     inner_->start();
   }
   if (!options_.network) return;
@@ -78,12 +90,20 @@ Agora::~Agora() {
   shutdown();
   {
     std::unique_lock<std::mutex> l(members_mutex_);
-    members_cv_.wait_for(l, std::chrono::seconds(10), [&] { return !running_; });
+    for (Member* m : members_) {
+      if (m->thread_id_.load() == std::this_thread::get_id()) {
+        std::fprintf(stderr, "mrt_dcdt: an Agora destroyed from inside its Member %d; call shutdown() there and "
+                             "destroy the Agora after lets_work returns\n", m->member_id_);
+        std::abort();
+      }
+    }
+    // lets_work running in another thread: it joins every Member, then returns.
+    members_cv_.wait(l, [&] { return !running_; });
   }
+  join_members();  // Members started by activate_member and never joined (none normally)
   stop_network();
   std::lock_guard<std::mutex> l(members_mutex_);
   for (Member* m : members_) {
-    if (m->thread_.joinable()) m->thread_.join();
     if (m->registered_) post_office_->unregister_mailbox(&m->mailbox_);
     m->registered_ = false;
     m->agora_ = nullptr;  // the Member may outlive its Agora
@@ -91,15 +111,70 @@ Agora::~Agora() {
   members_.clear();
 }
 
-void Agora::remove_member(Member* m) {
-  std::lock_guard<std::mutex> l(members_mutex_);
-  for (auto it = members_.begin(); it != members_.end(); ++it) {
-    if (*it != m) continue;
+void Agora::join_members() {
+  // Each thread is moved out under the lock by exactly one joiner and joined
+  // without the lock (the Member's last step takes it).
+  for (;;) {
+    std::thread t;
+    Member* m = nullptr;
+    {
+      std::lock_guard<std::mutex> l(members_mutex_);
+      for (Member* x : members_) {
+        if (!x->thread_.joinable()) continue;
+        t = std::move(x->thread_);
+        x->joining_ = true;
+        m = x;
+        break;
+      }
+    }
+    if (!m) return;
+    t.join();
+    std::lock_guard<std::mutex> l(members_mutex_);
+    m->joining_ = false;  // m is alive: its destructor waits for this
+    members_cv_.notify_all();
+  }
+}
+
+void Agora::detach_member(Member* m) {
+  std::thread t;
+  {
+    std::unique_lock<std::mutex> l(members_mutex_);
+    if (m->thread_id_.load() != std::thread::id() && m->state_.load() != MemberState::TERMINATED) {
+      // Destroyed while its thread runs: the derived part is gone, so no
+      // virtual function may run any more.
+      m->orphaned_ = true;
+      if (m->in_job_) {
+        std::fprintf(stderr, "mrt_dcdt: Member %d destroyed during its own job; terminate() it (or end lets_work) "
+                             "before destroying it\n", m->member_id_);
+        std::abort();
+      }
+      m->state_ = MemberState::TERMINATING;
+    }
+    if (m->thread_.joinable()) t = std::move(m->thread_);
+    members_cv_.wait(l, [&] { return !m->joining_; });
+    auto it = std::find(members_.begin(), members_.end(), m);
+    if (it != members_.end()) members_.erase(it);
     if (m->registered_) post_office_->unregister_mailbox(&m->mailbox_);
     m->registered_ = false;
-    members_.erase(it);
-    break;
   }
+  post_office_->wake_all();
+  if (t.joinable()) t.join();
+  m->agora_ = nullptr;
+  notify_state_change();
+}
+
+void Agora::terminate_member(Member* m) {
+  std::unique_lock<std::mutex> l(members_mutex_);
+  if (m->state_.load() != MemberState::TERMINATED) m->state_ = MemberState::TERMINATING;
+  members_cv_.notify_all();
+  const auto id = m->thread_id_.load();
+  l.unlock();
+  post_office_->wake_all();
+  if (id == std::thread::id() || id == std::this_thread::get_id()) return;
+  // From another thread: return once the Member has finished (close() run),
+  // so the caller may destroy it.
+  l.lock();
+  members_cv_.wait(l, [&] { return m->state_.load() == MemberState::TERMINATED; });
 }
 
 void Agora::stop_network() {
@@ -130,20 +205,24 @@ void Agora::add_member(Member* m) {
   members_.push_back(m);
 }
 
+void Agora::start_thread_locked(Member* m) {
+  m->state_ = MemberState::RUNNING;
+  m->thread_ = std::thread([this, m] { m->run(&stop_); });
+  m->thread_id_ = m->thread_.get_id();
+}
+
 void Agora::activate_member(Member* m) {
   bool start_now = false;
   {
     std::lock_guard<std::mutex> l(members_mutex_);
     if (!m || m->agora_ != this || m->state_ != MemberState::ADDED) return;
     m->state_ = MemberState::ACTIVE;
-    start_now = running_;
+    start_now = running_ && !stop_;
   }
-  if (start_now) {
-    m->init();
-    std::lock_guard<std::mutex> l(members_mutex_);
-    m->state_ = MemberState::RUNNING;
-    m->thread_ = std::thread([this, m] { m->run(&stop_); });
-  }
+  if (!start_now) return;
+  m->init();
+  std::lock_guard<std::mutex> l(members_mutex_);
+  if (running_ && !stop_ && m->state_ == MemberState::ACTIVE) start_thread_locked(m);
 }
 
 void Agora::lets_work() {
@@ -159,37 +238,37 @@ void Agora::lets_work() {
   for (Member* m : to_start) m->init();
   {
     std::lock_guard<std::mutex> l(members_mutex_);
-    for (Member* m : to_start) {
-      m->state_ = MemberState::RUNNING;
-      m->thread_ = std::thread([this, m] { m->run(&stop_); });
-    }
+    for (Member* m : to_start)
+      if (std::find(members_.begin(), members_.end(), m) != members_.end() && m->state_ == MemberState::ACTIVE &&
+          !stop_)
+        start_thread_locked(m);
   }
   {
     std::unique_lock<std::mutex> l(members_mutex_);
     auto done = [&] {
-      if (shutdown_) return true;
+      if (shutdown_ || g_signals.load() != signal_base_) return true;
       for (Member* m : members_) {
         auto s = m->state_.load();
         if (s == MemberState::RUNNING || s == MemberState::ACTIVE) return false;
       }
       return true;
     };
-    while (!done()) members_cv_.wait_for(l, std::chrono::milliseconds(100));
+    while (!done()) members_cv_.wait_for(l, std::chrono::milliseconds(10));
   }
   stop_ = true;
   post_office_->wake_all();
-  std::vector<Member*> all;
-  {
-    std::lock_guard<std::mutex> l(members_mutex_);
-    all = members_;
-  }
-  for (Member* m : all)
-    if (m->thread_.joinable()) m->thread_.join();
-  {
-    std::lock_guard<std::mutex> l(members_mutex_);
-    running_ = false;
-  }
-  members_cv_.notify_all();
+  join_members();
+  std::lock_guard<std::mutex> l(members_mutex_);
+  running_ = false;
+  members_cv_.notify_all();  // under the lock: ~Agora may be waiting for this
+}
+
+void Agora::shutdown_on_signal(int signum) {
+  struct sigaction sa {};
+  sa.sa_handler = count_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  ::sigaction(signum, &sa, nullptr);
 }
 
 void Agora::shutdown() {
@@ -200,7 +279,7 @@ void Agora::shutdown() {
 }
 
 void Agora::notify_state_change() {
-  { std::lock_guard<std::mutex> l(members_mutex_); }
+  std::lock_guard<std::mutex> l(members_mutex_);
   members_cv_.notify_all();
 }
 
@@ -216,12 +295,12 @@ bool Agora::seen_before(const MsgHeader& h) {
   return false;
 }
 
-void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
+bool Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
   auto& h = msg->mutable_header();
   if (src.kind != Source::MEMBER) {
     if (h.agora_id == agora_id_ || seen_before(h)) {
       ++duplicates_;  // our own message came back, or a copy by another path
-      return;
+      return true;
     }
     if (src.kind == Source::CHANNEL) {
       h.hops = static_cast<uint8_t>(h.hops + 1);
@@ -229,12 +308,12 @@ void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
     }
     if (h.hops > kMaxHops) {
       ++hop_limited_;
-      return;
+      return true;
     }
   }
   ++routed_;
   MsgPtr m = std::move(msg);
-  post_office_->post(m);
+  const bool delivered = post_office_->post(m);
   if (inner_ && src.kind != Source::INNER) inner_->send(*m);
   std::lock_guard<std::mutex> l(channels_mutex_);
   for (auto& ch : channels_) {
@@ -243,6 +322,7 @@ void Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
         (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level))
       ch->send(m);
   }
+  return delivered;
 }
 
 void Agora::add_channel(std::unique_ptr<Channel> c) {
@@ -281,10 +361,13 @@ AgoraStats Agora::stats() {
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
   s.mailbox_dropped = post_office_->mailbox_drops();
+  s.guaranteed_refused = post_office_->guaranteed_refused();
   if (inner_) {
     s.peer_ids = inner_->peer_ids();
     s.inner_peers = static_cast<int>(s.peer_ids.size());
     s.inner_errors = inner_->errors();
+    s.inner_dropped = inner_->dropped();
+    s.inner_stalled_peers = inner_->stalled_peers();
   }
   if (finder_) {
     auto f = finder_->peer_ids();

@@ -13,13 +13,10 @@ Member::Member(Agora* agora) : agora_(agora) {}
 Member::Member(Agora* agora, int period_ms) : agora_(agora), period_ms_(period_ms > 0 ? period_ms : 0) {}
 
 Member::~Member() {
-  if (thread_.joinable()) {
-    // The Agora normally joins its Members; a Member destroyed first must not
-    // leave a running thread behind.
-    state_ = MemberState::TERMINATING;
-    thread_.join();
-  }
-  if (agora_) agora_->remove_member(this);
+  // Stops and joins this Member's thread if it still runs (without calling
+  // any virtual function: the derived part is already gone), then leaves
+  // the Agora. See Agora::detach_member.
+  if (agora_) agora_->detach_member(this);
 }
 
 void Member::subscribe_msg_type(int type, RequestType req_type) {
@@ -40,10 +37,10 @@ Msg* Member::create_msg(int type, int delivery_warranty) {
 
 Msg* Member::create_msg(int type) { return create_msg(type, DCDT_DW_GUARANTEED); }
 
-void Member::share_msg(Msg* msg) {
-  if (!msg) return;
+bool Member::share_msg(Msg* msg) {
+  if (!msg) return false;
   std::shared_ptr<Msg> owned(msg);
-  if (!agora_) return;
+  if (!agora_) return false;
   auto& h = owned->mutable_header();
   h.member_id = member_id_;
   h.agora_id = agora_->agora_id();
@@ -51,16 +48,14 @@ void Member::share_msg(Msg* msg) {
   h.remote = false;
   h.incarnation = agora_->incarnation();
   h.seq = agora_->next_seq();
-  agora_->route(std::move(owned), Source{Source::MEMBER, nullptr});
+  return agora_->route(std::move(owned), Source{Source::MEMBER, nullptr});
 }
 
-Msg* Member::receive_msg() {
+const Msg* Member::receive_msg() {
   current_.reset();
   if (!agora_ || !registered_) return nullptr;
   current_ = agora_->post_office().pop(&mailbox_);
-  // Receivers get a read-only view in spirit; the legacy API returns a
-  // non-const pointer, and each message is shared, so do not modify it.
-  return const_cast<Msg*>(current_.get());
+  return current_.get();  // shared with the other receivers: read-only
 }
 
 void Member::remove_curr_msg() { current_.reset(); }
@@ -70,24 +65,35 @@ void Member::shutdown() {
 }
 
 void Member::terminate() {
-  state_ = MemberState::TERMINATING;
-  if (agora_) agora_->notify_state_change();
+  if (!agora_) {
+    state_ = MemberState::TERMINATING;
+    return;
+  }
+  agora_->terminate_member(this);
 }
 
 void Member::run(const std::atomic<bool>* stop) {
   using Clock = std::chrono::steady_clock;
-  auto& po = agora_->post_office();
+  Agora* agora = agora_;  // the Member may be gone once TERMINATED is set
+  auto& po = agora->post_office();
   const bool message_driven = period_ms_ == 0 && po.has_subscriptions(member_id_);
-  auto running = [&] { return !stop->load() && state_.load() == MemberState::RUNNING; };
+  auto running = [&] { return !stop->load() && state_.load() == MemberState::RUNNING && !orphaned_.load(); };
+  // Every virtual call is bracketed by in_job_ and skipped once the Member is
+  // orphaned (its destructor started): see Agora::detach_member.
+  auto job = [&](auto&& f) {
+    in_job_ = true;
+    if (!orphaned_) f();
+    in_job_ = false;
+  };
   int n = 0;
   auto next = Clock::now();
   while (running()) {
     if (message_driven) {
       size_t pending = po.wait_for_mail(&mailbox_, stop, std::chrono::milliseconds(50));
-      if (pending == 0) continue;
-      do_your_job(static_cast<int>(pending));
+      if (pending == 0 || !running()) continue;
+      job([&] { do_your_job(static_cast<int>(pending)); });
     } else if (period_ms_ > 0) {
-      do_your_job(n++);
+      job([&] { do_your_job(n++); });
       next += std::chrono::milliseconds(period_ms_);
       auto now = Clock::now();
       if (next < now) next = now;  // overrun: do not try to catch up
@@ -97,14 +103,17 @@ void Member::run(const std::atomic<bool>* stop) {
         std::this_thread::sleep_for(slice);
       }
     } else {
-      do_your_job(n++);
+      job([&] { do_your_job(n++); });
       std::this_thread::yield();
     }
   }
-  close();
+  job([&] { close(); });
   current_.reset();
-  state_ = MemberState::TERMINATED;
-  agora_->notify_state_change();
+  {
+    std::lock_guard<std::mutex> l(agora->members_mutex_);
+    state_ = MemberState::TERMINATED;
+    agora->members_cv_.notify_all();
+  }
 }
 
 }  // namespace mrt::dcdt

@@ -31,6 +31,7 @@ void PostOffice::unregister_mailbox(MailBox* box) {
   auto it = boxes_.find(box->member_id);
   if (it != boxes_.end() && it->second == box) {
     drops_of_unregistered_ += box->dropped;
+    refused_of_unregistered_ += box->refused;
     boxes_.erase(it);
   }
   for (auto& [type, m] : subs_) m.erase(box->member_id);
@@ -42,6 +43,29 @@ uint64_t PostOffice::mailbox_drops() {
   for (const auto& [id, box] : boxes_) n += box->dropped;
   return n;
 }
+
+uint64_t PostOffice::guaranteed_refused() {
+  std::lock_guard<std::mutex> l(mutex_);
+  uint64_t n = refused_of_unregistered_;
+  for (const auto& [id, box] : boxes_) n += box->refused;
+  return n;
+}
+
+namespace {
+// Makes room for `need` bytes by dropping the oldest non-guaranteed
+// messages; false when only guaranteed ones are left and it still does not fit.
+bool make_room(MailBox* box, size_t need) {
+  auto it = box->queue.begin();
+  while (box->bytes + need > PostOffice::kMailBoxBytes) {
+    while (it != box->queue.end() && (*it)->delivery_warranty() == DCDT_DW_GUARANTEED) ++it;
+    if (it == box->queue.end()) return false;
+    box->bytes -= PostOffice::cost(**it);
+    it = box->queue.erase(it);
+    ++box->dropped;
+  }
+  return true;
+}
+}  // namespace
 
 void PostOffice::subscribe(int member_id, int type, int scope_mask) {
   std::lock_guard<std::mutex> l(mutex_);
@@ -70,9 +94,12 @@ bool PostOffice::has_subscriptions(int member_id) {
   return false;
 }
 
-void PostOffice::dispatch_locked(const MsgPtr& msg) {
+bool PostOffice::dispatch_locked(const MsgPtr& msg) {
   auto it = subs_.find(msg->type());
-  if (it == subs_.end()) return;
+  if (it == subs_.end()) return true;
+  const size_t need = cost(*msg);
+  const bool guaranteed = msg->delivery_warranty() == DCDT_DW_GUARANTEED;
+  bool all = true;
   const int scope = msg->header().remote ? DCDT_REMOTE_MSG : DCDT_LOCAL_MSG;
   const bool own_agora = msg->agora_id() == agora_id;
   for (const auto& [member, mask] : it->second) {
@@ -81,13 +108,20 @@ void PostOffice::dispatch_locked(const MsgPtr& msg) {
     auto b = boxes_.find(member);
     if (b == boxes_.end()) continue;
     MailBox* box = b->second;
-    if (box->queue.size() >= kMailBoxCapacity) {
-      box->queue.pop_front();
-      ++box->dropped;
+    if (!make_room(box, need)) {
+      if (guaranteed) {
+        ++box->refused;
+        all = false;
+      } else {
+        ++box->dropped;
+      }
+      continue;
     }
     box->queue.push_back(msg);
+    box->bytes += need;
     box->cv.notify_one();
   }
+  return all;
 }
 
 MsgPtr PostOffice::pop(MailBox* box) {
@@ -95,6 +129,7 @@ MsgPtr PostOffice::pop(MailBox* box) {
   if (box->queue.empty()) return nullptr;
   MsgPtr m = std::move(box->queue.front());
   box->queue.pop_front();
+  box->bytes -= cost(*m);
   return m;
 }
 
@@ -120,9 +155,9 @@ namespace {
 class SlwbPostOffice : public PostOffice {
  public:
   SlwbPostOffice() : PostOffice(PostOfficePolicy::SLWB) {}
-  void post(MsgPtr msg) override {
+  bool post(MsgPtr msg) override {
     std::lock_guard<std::mutex> l(mutex_);
-    dispatch_locked(msg);
+    return dispatch_locked(msg);
   }
 };
 
@@ -140,13 +175,14 @@ class DispatcherPostOffice : public PostOffice {
     cv_.notify_all();
     thread_.join();
   }
-  void post(MsgPtr msg) override {
+  bool post(MsgPtr msg) override {
     std::unique_lock<std::mutex> l(mutex_);
     // SLWSM: wait for the single slot (bounded wait; a stopped office drops).
     space_cv_.wait(l, [&] { return queue_.size() < capacity_ || stop_; });
-    if (stop_) return;
+    if (stop_) return msg->delivery_warranty() != DCDT_DW_GUARANTEED;
     queue_.push_back(std::move(msg));
     cv_.notify_one();
+    return true;
   }
 
  private:

@@ -137,7 +137,7 @@ class Subscriber : public Member {
     for (auto& [type, scope] : o_.subs) subscribe_msg_type(type, scope);
   }
   void do_your_job(int) override {
-    while (Msg* m = receive_msg()) {
+    while (const Msg* m = receive_msg()) {
       const auto& h = m->header();
       std::ostringstream s;
       s << "recv type=" << h.type << " agora=" << h.agora_id << " member=" << h.member_id << " seq=" << h.seq

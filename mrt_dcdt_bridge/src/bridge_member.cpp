@@ -10,7 +10,7 @@ void BridgeMember::init() {
 }
 
 void BridgeMember::do_your_job(int) {
-  while (Msg* msg = receive_msg()) {
+  while (const Msg* msg = receive_msg()) {
     const TopicMapping* map = nullptr;
     for (const auto& m : mapping_.to_ros)
       if (m.type == msg->type()) map = &m;

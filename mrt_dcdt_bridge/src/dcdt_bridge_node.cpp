@@ -5,7 +5,11 @@
 #include <std_msgs/String.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
 
+#include <algorithm>
+#include <atomic>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include "mrt_common_ros/params.h"
@@ -60,6 +64,9 @@ class BridgeNode {
     ao.agora_id = o.agora_id;
     BridgeMapping mapping = load_bridge_mapping(o.mapping);
     agora_ = std::make_unique<Agora>(ao);
+    // The origin tag of what this node publishes: its agora id, under its
+    // node name, set before anything is advertised (README "Two bridges").
+    ros::param::set(origin_param(ros::this_node::getName()), agora_->agora_id());
 
     for (const auto& m : mapping.to_ros) {
       switch (m.kind) {
@@ -84,6 +91,7 @@ class BridgeNode {
   }
 
   ~BridgeNode() {
+    ros::param::del(origin_param(ros::this_node::getName()));
     agora_->shutdown();
     if (worker_.joinable()) worker_.join();
     member_.reset();
@@ -91,6 +99,31 @@ class BridgeNode {
   }
 
  private:
+  static std::string origin_param(const std::string& node) { return "/dcdt_bridges" + node; }
+
+  // True when a ROS message comes from another bridge whose Agora is a peer
+  // of ours: its content came out of our own DCDT community, so sharing it
+  // again would echo it between the two bridges forever.
+  bool from_peer_bridge(const std::string& publisher) {
+    std::lock_guard<std::mutex> l(loop_mutex_);
+    const double now = ros::WallTime::now().toSec();
+    auto it = bridge_ids_.find(publisher);
+    if (it == bridge_ids_.end() || now - it->second.second > 5.0) {
+      int id = 0;
+      if (!ros::param::get(origin_param(publisher), id)) id = 0;
+      it = bridge_ids_.insert_or_assign(publisher, std::make_pair(id, now)).first;
+    }
+    const int id = it->second.first;
+    if (id == 0) return false;
+    if (now - peers_time_ > 0.2) {
+      peers_ = agora_->stats().peer_ids;  // sorted
+      peers_time_ = now;
+    }
+    if (!std::binary_search(peers_.begin(), peers_.end(), id)) return false;
+    ++loops_suppressed_;
+    return true;
+  }
+
   bool forward_to_ros(const TopicMapping& m, const Msg& msg, const XmlMessage* xml) {
     auto& pub = pubs_.at(m.type);
     try {
@@ -115,9 +148,13 @@ class BridgeNode {
 
   template <class M>
   void subscribe_kind(ros::NodeHandle& nh, const TopicMapping& m, int q, std::function<XmlMessage(const M&)> conv) {
-    subs_.push_back(nh.subscribe<M>(m.topic, static_cast<uint32_t>(q),
+    // A boost::function of MessageEvent picks roscpp's event overload: a bare
+    // lambda would be called through the ConstPtr overload (MessageEvent
+    // converts from it) and lose the publisher's name ("unknown_publisher").
+    const boost::function<void(const ros::MessageEvent<M const>&)> cb =
                                     [this, m, conv](const ros::MessageEvent<M const>& ev) {
                                       if (ev.getPublisherName() == ros::this_node::getName()) return;  // our own echo
+                                      if (from_peer_bridge(ev.getPublisherName())) return;  // another bridge's echo
                                       try {
                                         member_->share(m, encode_xml(conv(*ev.getConstMessage())));
                                       } catch (const XmlError& e) {
@@ -125,7 +162,8 @@ class BridgeNode {
                                         ROS_WARN_THROTTLE(5.0, "dcdt_bridge: dropped a message of %s: %s",
                                                           m.topic.c_str(), e.what());
                                       }
-                                    }));
+                                    };
+    subs_.push_back(nh.subscribe<M, const ros::MessageEvent<M const>&>(m.topic, static_cast<uint32_t>(q), cb));
   }
 
   void subscribe(ros::NodeHandle& nh, const TopicMapping& m, int q) {
@@ -139,13 +177,17 @@ class BridgeNode {
       case PayloadKind::COMMANDS:
         subscribe_kind<mrt_msgs::CommandArray>(nh, m, q, ros_conv::from_commands);
         break;
-      case PayloadKind::RAW:
-        subs_.push_back(nh.subscribe<std_msgs::String>(
-            m.topic, static_cast<uint32_t>(q), [this, m](const ros::MessageEvent<std_msgs::String const>& ev) {
+      case PayloadKind::RAW: {
+        const boost::function<void(const ros::MessageEvent<std_msgs::String const>&)> cb =
+            [this, m](const ros::MessageEvent<std_msgs::String const>& ev) {
               if (ev.getPublisherName() == ros::this_node::getName()) return;
+              if (from_peer_bridge(ev.getPublisherName())) return;
               member_->share(m, ev.getConstMessage()->data);
-            }));
+            };
+        subs_.push_back(nh.subscribe<std_msgs::String, const ros::MessageEvent<std_msgs::String const>&>(
+            m.topic, static_cast<uint32_t>(q), cb));
         break;
+      }
     }
   }
 
@@ -163,7 +205,8 @@ class BridgeNode {
     uint64_t channel_errors = 0;
     for (const auto& c : a.channels) channel_errors += c.errors;
     const bool trouble = b.parse_errors > 0 || b.conversion_errors > 0 || b.dropped > 0 || a.mailbox_dropped > 0 ||
-                         a.hop_limited > 0 || a.inner_errors > 0 || channel_errors > 0;
+                         a.hop_limited > 0 || a.inner_errors > 0 || a.inner_dropped > 0 || a.guaranteed_refused > 0 ||
+                         channel_errors > 0;
     st.level = trouble ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     st.message = peers > 0 ? "bridging" : "no peer Agora seen";
     if (peers == 0 && st.level == diagnostic_msgs::DiagnosticStatus::OK) st.level = diagnostic_msgs::DiagnosticStatus::WARN;
@@ -186,10 +229,16 @@ class BridgeNode {
     kv("conversion_errors", std::to_string(b.conversion_errors));
     kv("dropped", std::to_string(b.dropped));
     kv("mailbox_dropped", std::to_string(a.mailbox_dropped));
+    kv("guaranteed_refused", std::to_string(a.guaranteed_refused));
     kv("hop_limited", std::to_string(a.hop_limited));
     kv("inner_errors", std::to_string(a.inner_errors));
+    kv("inner_dropped", std::to_string(a.inner_dropped));
+    std::string stalled;
+    for (int id : a.inner_stalled_peers) stalled += (stalled.empty() ? "" : " ") + std::to_string(id);
+    kv("inner_stalled_peers", stalled);
     kv("channel_errors", std::to_string(channel_errors));
     kv("duplicates_suppressed", std::to_string(a.duplicates));
+    kv("loops_suppressed", std::to_string(loops_suppressed_.load()));
     if (!b.last_error.empty()) kv("last_error", b.last_error);
     for (const auto& c : a.channels)
       kv("channel " + c.name, std::string(c.connected ? "up" : "down") + " sent=" + std::to_string(c.sent) +
@@ -207,6 +256,11 @@ class BridgeNode {
   ros::Publisher diag_pub_;
   ros::Timer diag_timer_;
   std::thread worker_;
+  std::mutex loop_mutex_;  // the loop guard's caches
+  std::map<std::string, std::pair<int, double>> bridge_ids_;  // publisher -> (agora id or 0, wall time checked)
+  std::vector<int> peers_;
+  double peers_time_ = -1.0;
+  std::atomic<uint64_t> loops_suppressed_{0};
 };
 
 }  // namespace

@@ -32,6 +32,8 @@ struct AgoraOptions {
   bool finder = true;           ///< NETWORK: discover Agoras by multicast
   int finder_period_ms = 200;
   int agora_id = 0;             ///< 0 = random
+  int inner_socket_buffer = 4 << 20;  ///< SO_SNDBUF/SO_RCVBUF asked for the inner-link socket (bytes)
+  size_t inner_queue_bytes = 8u << 20;  ///< per local peer: bytes waiting for a slow Agora before it is dropped from delivery
   ChannelOptions channel;
 };
 
@@ -40,7 +42,10 @@ struct AgoraStats {
   uint64_t duplicates = 0;       ///< copies recognised by origin (agora id, incarnation, seq) and dropped
   uint64_t hop_limited = 0;      ///< dropped after more than kMaxHops channels
   uint64_t inner_errors = 0;     ///< malformed or undeliverable inner-link datagrams
-  uint64_t mailbox_dropped = 0;  ///< discarded because a Member's mailbox was full
+  uint64_t mailbox_dropped = 0;  ///< non-guaranteed messages discarded because a Member's mailbox was full
+  uint64_t guaranteed_refused = 0;  ///< guaranteed messages a full mailbox refused (the sender was told under SLWB)
+  uint64_t inner_dropped = 0;    ///< messages not delivered to a stalled local Agora (its queue was full)
+  std::vector<int> inner_stalled_peers;  ///< local Agoras currently dropped from delivery
   int inner_peers = 0;
   int finder_peers = 0;
   std::vector<int> peer_ids;  ///< Agoras seen: inner-link peers, Finder peers, channel peers (sorted, unique)
@@ -73,6 +78,9 @@ class Agora {
   /// one called shutdown(). Members are joined and close()d before returning.
   void lets_work();
   void shutdown();
+  /// Installs a handler for signum that stops every running Agora of the
+  /// process (async-signal-safe: it only sets a flag that lets_work polls).
+  static void shutdown_on_signal(int signum);
 
   int agora_id() const { return agora_id_; }
   /// Random, non-zero, new in every process: tells a restarted Agora with a
@@ -84,17 +92,26 @@ class Agora {
   const AgoraOptions& options() const { return options_; }
 
   // --- used by Members and system Members ---
-  void route(std::shared_ptr<Msg> msg, const Source& src);
+  /// False when a guaranteed message was refused by a full local mailbox.
+  bool route(std::shared_ptr<Msg> msg, const Source& src);
   int next_member_id() { return ++member_counter_; }
   uint64_t next_seq() { return ++seq_counter_; }
   void add_channel(std::unique_ptr<Channel> c);
   /// True when a live channel is connected to Agora `id`.
   bool has_connected_peer(int id);
   void notify_state_change();
-  /// Called by a Member's destructor.
-  void remove_member(Member* m);
 
  private:
+  friend class Member;
+  /// A Member's destructor: stops its thread if still running (no virtual
+  /// call), waits for its joiner, leaves the Agora.
+  void detach_member(Member* m);
+  /// Member::terminate.
+  void terminate_member(Member* m);
+  /// Joins every started Member thread exactly once, never under the lock.
+  void join_members();
+  /// Caller holds members_mutex_.
+  void start_thread_locked(Member* m);
   void setup();
   void stop_network();
   bool seen_before(const MsgHeader& h);
@@ -112,6 +129,7 @@ class Agora {
   bool running_ = false;
   std::atomic<bool> stop_{false};  // read by the Member threads
   std::atomic<bool> shutdown_{false};
+  unsigned signal_base_ = 0;  // signals counted by shutdown_on_signal's handler at construction
 
   std::mutex seen_mutex_;
   struct Origin {

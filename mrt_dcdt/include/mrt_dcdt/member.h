@@ -47,10 +47,13 @@ class Member {
   Msg* create_msg(int type, int delivery_warranty);
   Msg* create_msg(int type);
   /// Hands msg to the PostOffice (and the Agora's links); takes ownership.
-  void share_msg(Msg* msg);
+  /// False when a guaranteed message was refused by a full mailbox of this
+  /// Agora (SLWB; README "PostOffice policies").
+  bool share_msg(Msg* msg);
   /// Makes the oldest waiting message the current one and returns it
-  /// (nullptr when none). The previous current message is released.
-  Msg* receive_msg();
+  /// (nullptr when none). The previous current message is released. The
+  /// message is shared with the other receivers, so it is read-only.
+  const Msg* receive_msg();
   /// Releases the current message (destroyed when no other Member holds it).
   void remove_curr_msg();
 
@@ -58,6 +61,8 @@ class Member {
   /// Asks the whole Agora to stop (lets_work returns).
   void shutdown();
   /// This Member stops after the current do_your_job (state TERMINATING).
+  /// Called from another thread, returns once the Member has finished
+  /// (close() run, state TERMINATED), so the caller may destroy it.
   void terminate();
   MemberState state() const { return state_.load(); }
   int member_id() const { return member_id_; }
@@ -78,7 +83,11 @@ class Member {
   std::atomic<MemberState> state_{MemberState::CREATED};
   MailBox mailbox_;
   MsgPtr current_;
-  std::thread thread_;
+  std::thread thread_;                       // moved out by its one joiner (Agora::join_members)
+  std::atomic<std::thread::id> thread_id_{};  // set when the thread is created
+  bool joining_ = false;                      // an Agora joins the thread (guarded by its lock)
+  std::atomic<bool> orphaned_{false};         // destructor started: no virtual call any more
+  std::atomic<bool> in_job_{false};           // inside do_your_job / close
   bool registered_ = false;
 };
 

@@ -39,13 +39,18 @@ bool parse_policy(const std::string& s, PostOfficePolicy* out);
 struct MailBox {
   int member_id = 0;
   std::deque<MsgPtr> queue;
+  size_t bytes = 0;      ///< PostOffice::cost of the queued messages
   std::condition_variable cv;
-  uint64_t dropped = 0;  ///< messages discarded because the queue was full
+  uint64_t dropped = 0;  ///< non-guaranteed messages discarded because the mailbox was full
+  uint64_t refused = 0;  ///< guaranteed messages refused because the mailbox was full of guaranteed ones
 };
 
 class PostOffice {
  public:
-  static constexpr size_t kMailBoxCapacity = 100000;
+  static constexpr size_t kMailBoxCapacity = 100000;  ///< dispatcher queue (SLWDWCV), messages
+  static constexpr size_t kMailBoxBytes = 64u << 20;  ///< a mailbox's cap, in cost() bytes
+  static constexpr size_t kMsgOverhead = 256;         ///< bookkeeping counted per message
+  static size_t cost(const Msg& m) { return static_cast<size_t>(m.payload_len()) + kMsgOverhead; }
 
   static std::unique_ptr<PostOffice> create(PostOfficePolicy policy);
   virtual ~PostOffice();
@@ -60,8 +65,13 @@ class PostOffice {
   bool has_subscriptions(int member_id);
 
   /// Accepts a message for delivery. The producing Member (same agora id and
-  /// member id) never receives its own message.
-  virtual void post(MsgPtr msg) = 0;
+  /// member id) never receives its own message. A full mailbox (kMailBoxBytes)
+  /// first loses its oldest non-guaranteed messages (counted as dropped); a
+  /// guaranteed message that still does not fit is never dropped silently:
+  /// it is refused, counted (guaranteed_refused) and, under SLWB, post
+  /// returns false (under the dispatcher policies the refusal happens after
+  /// post returned: counted only).
+  virtual bool post(MsgPtr msg) = 0;
 
   /// Pops the oldest message of a mailbox (nullptr when empty).
   MsgPtr pop(MailBox* box);
@@ -74,20 +84,23 @@ class PostOffice {
   /// Messages discarded because a mailbox was full, over every mailbox this
   /// PostOffice has held (unregistered ones included).
   uint64_t mailbox_drops();
+  /// Guaranteed messages refused because a mailbox was full of guaranteed ones.
+  uint64_t guaranteed_refused();
 
   int agora_id = 0;  ///< set by the Agora; used to recognise own messages
 
  protected:
   explicit PostOffice(PostOfficePolicy p) : policy_(p) {}
-  /// Fans msg out into the matching mailboxes. Caller holds mutex_.
-  void dispatch_locked(const MsgPtr& msg);
+  /// Fans msg out into the matching mailboxes; false when a guaranteed
+  /// message was refused by a full mailbox. Caller holds mutex_.
+  bool dispatch_locked(const MsgPtr& msg);
 
   std::mutex mutex_;  // the single lock
   PostOfficePolicy policy_;
 
  private:
   std::map<int, MailBox*> boxes_;
-  uint64_t drops_of_unregistered_ = 0;
+  uint64_t drops_of_unregistered_ = 0, refused_of_unregistered_ = 0;
   std::map<int, std::map<int, int>> subs_;  // type -> member id -> scope mask
 };
 
