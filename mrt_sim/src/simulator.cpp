@@ -252,6 +252,16 @@ void Simulator::move_ball() {
   }
 }
 
+std::vector<OtherRobot> Simulator::other_robots(std::size_t i) const {
+  std::vector<OtherRobot> others;
+  for (std::size_t j = 0; j < robots_.size(); ++j) {
+    if (j == i) continue;
+    const RobotState& o = robots_[j];
+    others.push_back({o.config.name, {o.pose.x, o.pose.y}, o.config.base.body_radius, o.config.color});
+  }
+  return others;
+}
+
 void Simulator::update_sensors(std::size_t i) {
   RobotState& r = robots_[i];
   const SensorsConfig& cfg = r.config.sensors;
@@ -260,6 +270,7 @@ void Simulator::update_sensors(std::size_t i) {
     return p > 0 && steps_ % p == 0;
   };
   r.mice_ready = r.encoders_ready = r.sonar_ready = r.vision_ready = r.dgps_ready = false;
+  r.camera_ready = fires(cfg.camera.rate);
 
   if (fires(cfg.rate_mice) && mice_[i].size() >= 2) {
     r.mice_ready = true;
