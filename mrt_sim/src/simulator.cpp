@@ -306,8 +306,10 @@ void Simulator::update_sensors(std::size_t i) {
     }
     if (vision) {
       r.vision_ready = true;
+      std::vector<SeenObject> no_more_noise;  // realistic percepts carry their own
       r.vision = vision_percepts(world_, others, r.pose, cfg);
-      for (SeenObject& o : r.vision) {
+      if (cfg.vision_realistic) r.vision = realistic_percepts(r.vision, cfg, rng_);
+      for (SeenObject& o : cfg.vision_realistic ? no_more_noise : r.vision) {
         const double dn = cfg.vision_distance_noise * o.distance;
         if (dn > 0.0) o.distance = std::max(0.0, o.distance + dn * std::normal_distribution<double>()(rng_));
         if (cfg.vision_bearing_noise > 0.0)

@@ -296,12 +296,20 @@ class Loader : private mrt::common::YamlReader {
   }
 
   void vision(const Node& v, SensorsConfig& s) const {
-    map(v, "vision", {"rate", "range", "distance_noise", "bearing_noise", "line_point_spacing"});
+    map(v, "vision", {"rate", "range", "distance_noise", "bearing_noise", "line_point_spacing", "model",
+                      "miss_near", "miss_far", "false_positives"});
     s.rate_vision = non_negative(v, "rate", 10.0);
     s.vision_range = positive(v, "range", s.vision_range);
     s.vision_distance_noise = non_negative(v, "distance_noise", s.vision_distance_noise);
     s.vision_bearing_noise = deg_to_rad(non_negative(v, "bearing_noise", mrt::common::rad_to_deg(s.vision_bearing_noise)));
     s.line_point_spacing = bounded(v, "line_point_spacing", s.line_point_spacing, 0.01, false);
+    const std::string model = string(v, "model", "ideal", false, "vision");
+    if (model != "ideal" && model != "realistic")
+      fail(v["model"], "expected 'model' ideal or realistic, got '" + model + "'");
+    s.vision_realistic = model == "realistic";
+    s.vision_miss_near = fraction(v, "miss_near", s.vision_miss_near);
+    s.vision_miss_far = fraction(v, "miss_far", s.vision_miss_far);
+    s.vision_false_positives = bounded(v, "false_positives", s.vision_false_positives, 0.0, false, 100.0);
   }
 
   void dgps(const Node& d, SensorsConfig& s) const {

@@ -128,6 +128,10 @@ struct SensorsConfig {
   double vision_distance_noise = 0.02;  // relative: sigma = noise * distance
   double vision_bearing_noise = 0.01;   // rad
   double line_point_spacing = 0.25;     // m between sampled field-line points
+  bool vision_realistic = false;        // `model: realistic` (see realistic_percepts)
+  double vision_miss_near = 0.02;       // probability of missing an object at distance 0 ...
+  double vision_miss_far = 0.3;         // ... and at `range` (linear in between)
+  double vision_false_positives = 0.2;  // mean false objects per frame (Poisson)
   double rate_dgps = 0.0;       // Hz, 0 = off
   double dgps_noise = 0.05;     // m, std-dev per axis
   double datum_latitude = 45.478;   // deg, world origin (for NavSatFix)
