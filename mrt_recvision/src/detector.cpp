@@ -26,6 +26,14 @@ Detector::Detector(const Calibration& cal) : cal_(cal), grid_(cal.camera, cal.de
       if (d >= o.min_distance && d <= o.max_distance) valid_half_.at<std::uint8_t>(v, u) = 255;
     }
   }
+  // Floor metres and bearing radians per image pixel, per centimetre of distance.
+  for (double d = 0.0; d <= o.max_distance + 0.01; d += 0.01) {
+    const double r = cam.profile.radius(std::atan2(d, cam.height));
+    const double th2 = cam.profile.theta(r + 1.0);
+    const double d2 = std::isfinite(th2) && th2 < M_PI / 2 ? cam.height * std::tan(th2) : 2.0 * d + 1.0;
+    m_per_px_.push_back(std::isfinite(r) ? d2 - d : 1.0);
+    rad_per_px_.push_back(std::isfinite(r) && r > 1.0 ? 1.0 / r : M_PI);
+  }
   radial_cls_.resize(grid_.radial().size());
   for (std::size_t i = 0; i < grid_.radial().size(); ++i) radial_cls_[i].resize(grid_.radial()[i].points.size());
 }
@@ -50,18 +58,16 @@ bool Detector::accepts(const Frame& f, std::string& why) const {
 }
 
 Detection Detector::make(const char* cls, ColorClass c, double x, double y, double px) const {
-  const auto& cam = cal_.camera;
   Detection d;
   d.membership_class = cls;
   d.color = c;
-  if (!cam.project_ground(x, y, d.u, d.v)) d.u = d.v = -1;
-  // Radial spread: `px` pixels of image radius at this floor distance.
+  d.vx = x;
+  d.vy = y;
+  // Radial spread: `px` pixels of image radius at this floor distance (table per 1 cm).
   const double dv = std::hypot(x, y);
-  const double r = cam.profile.radius(std::atan2(dv, cam.height));
-  const double th2 = cam.profile.theta(r + px);
-  const double d2 = std::isfinite(th2) && th2 < M_PI / 2 ? cam.height * std::tan(th2) : 2.0 * dv;
-  d.sigma_distance = std::max(std::abs(d2 - dv), 1e-3);
-  d.sigma_bearing = r > 1.0 ? px / r : M_PI;
+  const std::size_t bin = std::min(m_per_px_.size() - 1, static_cast<std::size_t>(dv * 100.0));
+  d.sigma_distance = std::max(px * m_per_px_[bin], 1e-3);
+  d.sigma_bearing = px * rad_per_px_[bin];
   const double c0 = std::cos(cal_.mount_yaw), s0 = std::sin(cal_.mount_yaw);
   d.x = cal_.mount_x + c0 * x - s0 * y;
   d.y = cal_.mount_y + s0 * x + c0 * y;

@@ -7,16 +7,27 @@
 
 namespace mrt::recvision {
 
-namespace {
-cv::Scalar rgb_of(ColorClass c) {
+cv::Scalar color_rgb(ColorClass c) {
   switch (c) {
     case ColorClass::kYellow: return {255, 230, 0};
     case ColorClass::kBlue: return {0, 90, 255};
-    case ColorClass::kOrange: return {255, 0, 255};  // magenta outline stands out on orange and green
+    case ColorClass::kOrange: return {255, 120, 0};
     case ColorClass::kCyan: return {0, 255, 255};
     case ColorClass::kMagenta: return {255, 0, 255};
-    default: return {255, 0, 0};
+    case ColorClass::kWhite: return {255, 255, 255};
+    case ColorClass::kGreen: return {0, 200, 0};
+    case ColorClass::kRed: return {255, 0, 0};
+    default: return {60, 60, 60};
   }
+}
+
+namespace {
+// Outlines drawn over the image: the ball's in magenta (it stands out on
+// orange and green), black robots in red.
+cv::Scalar rgb_of(ColorClass c) {
+  if (c == ColorClass::kOrange) return {255, 0, 255};
+  if (c == ColorClass::kBlack || c == ColorClass::kNone) return {255, 0, 0};
+  return color_rgb(c);
 }
 }  // namespace
 
@@ -30,8 +41,8 @@ void Detector::draw(const Frame& f, const std::vector<Detection>& dets, cv::Mat&
     if (cam.project_ground(d, 0.0, u, v)) cv::circle(out, c, static_cast<int>(std::hypot(u - cam.cx, v - cam.cy)), {90, 90, 90}, 1);
   }
   for (const Detection& d : dets) {
-    if (d.u < 0) continue;
-    const cv::Point p(static_cast<int>(std::lround(d.u)), static_cast<int>(std::lround(d.v)));
+    if (!cam.project_ground(d.vx, d.vy, u, v)) continue;
+    const cv::Point p(static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v)));
     if (d.membership_class == "Line") {
       cv::circle(out, p, 1, {255, 0, 0}, cv::FILLED);
     } else if (d.membership_class == "Ball") {

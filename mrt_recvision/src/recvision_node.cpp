@@ -12,6 +12,7 @@
 #include <sensor_msgs/Image.h>
 
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <chrono>
 #include <memory>
@@ -58,6 +59,52 @@ mrt_msgs::Percept to_percept(const std::vector<Detection>& dets, const std_msgs:
   return p;
 }
 
+// rviz view of the percepts: one marker per detection in base_link, in its colour.
+visualization_msgs::MarkerArray to_markers(const std::vector<Detection>& dets, const std_msgs::Header& h,
+                                           const std::string& frame) {
+  visualization_msgs::MarkerArray arr;
+  visualization_msgs::Marker clear;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  arr.markers.push_back(clear);
+  visualization_msgs::Marker lines;
+  lines.header.stamp = h.stamp;
+  lines.header.frame_id = frame;
+  lines.ns = "lines";
+  lines.type = visualization_msgs::Marker::POINTS;
+  lines.scale.x = lines.scale.y = 0.05;
+  lines.color.r = lines.color.g = lines.color.b = lines.color.a = 1.0f;
+  lines.pose.orientation.w = 1.0;
+  int id = 0;
+  for (const Detection& d : dets) {
+    geometry_msgs::Point p;
+    p.x = d.x;
+    p.y = d.y;
+    if (d.membership_class == "Line") {
+      lines.points.push_back(p);
+      continue;
+    }
+    visualization_msgs::Marker m;
+    m.header = lines.header;
+    m.ns = d.membership_class;
+    m.id = id++;
+    m.type = d.membership_class == "Ball" ? visualization_msgs::Marker::SPHERE : visualization_msgs::Marker::CYLINDER;
+    const double size = d.membership_class == "Ball" ? 0.22 : d.membership_class == "Robot" ? 0.5 : 0.15;
+    m.scale.x = m.scale.y = size;
+    m.scale.z = d.membership_class == "Ball" ? 0.22 : 0.4;
+    m.pose.position = p;
+    m.pose.position.z = 0.5 * m.scale.z;
+    m.pose.orientation.w = 1.0;
+    const cv::Scalar c = color_rgb(d.color);
+    m.color.r = float(c[0] / 255.0);
+    m.color.g = float(c[1] / 255.0);
+    m.color.b = float(c[2] / 255.0);
+    m.color.a = 0.8f;
+    arr.markers.push_back(m);
+  }
+  arr.markers.push_back(lines);
+  return arr;
+}
+
 class RecVisionNode {
  public:
   RecVisionNode(ros::NodeHandle nh, ros::NodeHandle pnh) : it_(nh), tf_listener_(tf_buffer_), updater_(nh, pnh) {
@@ -74,6 +121,7 @@ class RecVisionNode {
     detector_ = std::make_unique<Detector>(load_calibration(calib_file));  // ParseError -> run_node exits 1
     percepts_pub_ = nh.advertise<mrt_msgs::Percept>("percepts", 10);
     if (debug_) debug_pub_ = it_.advertise("camera/debug_image", 1);
+    markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("vision_markers", 2);
     image_sub_ = it_.subscribe("camera/image_raw", 2, &RecVisionNode::on_image, this);
     updater_.setHardwareID("recvision");
     updater_.add("frames", this, &RecVisionNode::diagnose);
@@ -102,6 +150,7 @@ class RecVisionNode {
     ++frames_;
     percepts_pub_.publish(to_percept(dets, msg->header, base_frame_, robot_));
     if (debug_ && debug_pub_.getNumSubscribers() > 0) publish_debug(f, dets, msg->header);
+    if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(to_markers(dets, msg->header, base_frame_));
     updater_.update();
   }
 
@@ -148,7 +197,7 @@ class RecVisionNode {
   image_transport::ImageTransport it_;
   image_transport::Subscriber image_sub_;
   image_transport::Publisher debug_pub_;
-  ros::Publisher percepts_pub_;
+  ros::Publisher percepts_pub_, markers_pub_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   diagnostic_updater::Updater updater_;

@@ -78,7 +78,7 @@ TEST(RecVisionNode, PerceptsDebugImageAndDroppedFrames) {
   auto pub = nh.advertise<sensor_msgs::Image>("/robot1/camera/image_raw", 5);
   ASSERT_TRUE(wait_for([&] { return pub.getNumSubscribers() > 0 && d_sub.getNumPublishers() > 0; }, 20.0));
 
-  const auto cal = mrt::recvision::load_calibration(MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml");
+  const auto cal = mrt::recvision::load_calibration(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml");
   ts::Scene s;
   s.ball = ts::SceneBall{Eigen::Vector2d(2.0, -0.5), 0.11};
   const cv::Mat frame = ts::render(cal.camera, s, 0, 0, 0);

@@ -30,7 +30,11 @@ int error_line(const std::string& text) {
 TEST(Calibration, ShippedFileLoads) {
   const Calibration c = mrt::recvision::load_calibration(MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml");
   EXPECT_EQ(c.camera.width, 640);
-  EXPECT_DOUBLE_EQ(c.camera.height, 0.6);
+  EXPECT_DOUBLE_EQ(c.camera.height, 0.7);
+  // Isometric inner part, 2 cm per pixel: 1 m on the floor is 50 px out.
+  double u = 0, v = 0;
+  ASSERT_TRUE(c.camera.project_ground(1.0, 0.0, u, v));
+  EXPECT_NEAR(v, 240.0 - 50.0, 0.05);
   EXPECT_EQ(c.colors.classify(40, 140, 40), ColorClass::kGreen);
   EXPECT_EQ(c.colors.classify(255, 120, 0), ColorClass::kOrange);
   EXPECT_EQ(c.detector.radial_lines, 360);

@@ -19,7 +19,8 @@ namespace ts = mrt::recvision::testing;
 using namespace mrt::recvision;
 
 namespace {
-const std::string kCalib = MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml";
+const std::string kCalib = MRT_RECVISION_TEST_DATA "/hyperbolic.yaml";
+const std::string kSimCalib = MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml";  // mrt_sim's MSL camera
 std::string tmp(const std::string& name) { return ::testing::TempDir() + "/recvision_cli_" + name; }
 void save_rgb(const std::string& path, const cv::Mat& rgb) {
   cv::Mat bgr;
@@ -101,7 +102,7 @@ TEST(Cli, CalibrateLearnsTheMarkedColour) {
 }
 
 TEST(Cli, MirrorCalibFitsRingsAtKnownDistances) {
-  // Rings where the hyperbolic mirror of msl_omni.yaml images 0.5 ... 4 m:
+  // Rings where the hyperbolic mirror of test/data/hyperbolic.yaml images 0.5 ... 4 m:
   // r = 200 sin t / (0.8 + cos t), t = atan(d / 0.6).
   cv::Mat rgb(480, 640, CV_8UC3, cv::Scalar(40, 140, 40));
   std::string dists;
@@ -121,4 +122,53 @@ TEST(Cli, MirrorCalibFitsRingsAtKnownDistances) {
   const auto wrong = cr::err(RECVISION_MIRROR_CALIB, "--calib " + kCalib + " --image " + tmp("rings.png") + " --ray 0:1,2");
   EXPECT_EQ(wrong.code, 1);
   EXPECT_NE(wrong.text.find("found 6 line(s)"), std::string::npos) << wrong.text;
+}
+
+// A bag of frames rendered by mrt_sim's camera (robot1 at (-2, 0) facing
+// +x, the ball at the centre spot: 2.0 m ahead) plus one mono8 frame,
+// replayed through recvision_run.
+#include <rosbag/bag.h>
+#include <sensor_msgs/Image.h>
+
+#include "mrt_sim/camera.h"
+
+TEST(Cli, RunReplaysABagOfSimulatedFrames) {
+  mrt::sim::World w = mrt::sim::load_world(MRT_SIM_WORLD);
+  const auto& rc = w.robots.at(0);
+  mrt::sim::CameraRenderer renderer(w, rc.sensors.camera.model, mrt::sim::camera_options(rc, 3));
+  const std::string path = tmp("sim.bag");
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    for (int i = 0; i < 4; ++i) {
+      sensor_msgs::Image m;
+      m.header.stamp = ros::Time(10.0 + i);
+      m.header.frame_id = "robot1/omni_mirror";
+      cv::Mat rgb;
+      renderer.render({-2.0, 0.0, 0.0}, {}, 10.0 + i, rgb);
+      if (i == 2) rgb = cv::Mat(rgb.rows, rgb.cols, CV_8UC1, cv::Scalar(0));
+      m.encoding = i == 2 ? "mono8" : "rgb8";
+      m.width = rgb.cols;
+      m.height = rgb.rows;
+      m.step = rgb.cols * rgb.elemSize();
+      m.data.assign(rgb.data, rgb.data + rgb.total() * rgb.elemSize());
+      bag.write("/robot1/camera/image_raw", m.header.stamp, m);
+    }
+  }
+  const auto r = cr::run("'" RECVISION_RUN "' --calib " + kSimCalib + " --bag " + path + " 2>&1");
+  ASSERT_EQ(r.code, 0) << r.text;
+  EXPECT_NE(r.text.find("3 frames from /robot1/camera/image_raw, 1 dropped"), std::string::npos) << r.text;
+  std::istringstream in(r.text);
+  int balls = 0;
+  for (std::string line; std::getline(in, line);) {
+    double stamp = 0, dist = 0, bearing = 0, rel = 0;
+    char cls[32] = {0}, col[32] = {0};
+    if (std::sscanf(line.c_str(), "%lf,%31[^,],%31[^,],%lf,%lf,%lf", &stamp, cls, col, &dist, &bearing, &rel) != 6 ||
+        std::string(cls) != "Ball")
+      continue;
+    EXPECT_NEAR(dist, 2.0, 0.04);  // 2 %
+    EXPECT_NEAR(bearing, 0.0, 0.02);
+    EXPECT_NE(stamp, 12.0);        // the dropped frame
+    ++balls;
+  }
+  EXPECT_EQ(balls, 3);
 }

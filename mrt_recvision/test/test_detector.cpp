@@ -14,7 +14,7 @@ using namespace mrt::recvision;
 namespace ts = mrt::recvision::testing;
 
 namespace {
-Calibration cal() { return load_calibration(MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml"); }
+Calibration cal() { return load_calibration(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml"); }
 
 Frame frame_of(const cv::Mat& rgb) {
   Frame f;

@@ -12,7 +12,7 @@
 using namespace mrt::recvision;
 
 namespace {
-// The hyperbolic mirror of config/msl_omni.yaml written out: r = 200 sin t / (0.8 + cos t).
+// The hyperbolic mirror of test/data/hyperbolic.yaml written out: r = 200 sin t / (0.8 + cos t).
 double hyper(double d) {
   const double t = std::atan2(d, 0.6);
   return 200.0 * std::sin(t) / (0.8 + std::cos(t));
@@ -53,7 +53,7 @@ TEST(MirrorFit, WhiteRingsAlongARay) {
   cv::circle(img, {320, 240}, 150, cv::Scalar(250, 250, 250), 3);
   Frame f;
   f.rgb = img;
-  const Calibration c = load_calibration(MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml");
+  const Calibration c = load_calibration(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml");
   for (double bearing : {0.0, 1.0, 2.5}) {
     const auto r = white_runs_along_ray(f, c.colors, 320, 240, bearing, 30, 230);
     ASSERT_EQ(r.size(), 2u) << bearing;

@@ -14,7 +14,7 @@ using namespace mrt::recvision;
 namespace {
 constexpr std::uint8_t G = 1, W = 2, O = 3, N = 0;  // green, white, orange, none
 
-Calibration cal() { return load_calibration(MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml"); }
+Calibration cal() { return load_calibration(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml"); }
 
 // A straight fake scan line, points 5 cm apart along x.
 ScanLine fake(int n) {

@@ -27,7 +27,7 @@ struct Detection {
   double distance = 0, bearing = 0;  // from the base_link origin; rad counter-clockwise from x
   double sigma_distance = 0, sigma_bearing = 0;  // one standard deviation (m, rad)
   double reliability = 1.0;
-  double u = 0, v = 0;            // where it is in the image (for drawing)
+  double vx = 0, vy = 0;          // floor point in the viewpoint frame (for drawing)
 };
 
 /// Counts of the last frame, for diagnostics and the benchmark.
@@ -35,6 +35,9 @@ struct DetectorStats {
   int line_points_found = 0;  // before thinning
   int ball_candidates = 0;
 };
+
+/// Display colour (RGB) of a colour class, for the debug image and markers.
+cv::Scalar color_rgb(ColorClass c);
 
 class Detector {
  public:
@@ -69,6 +72,7 @@ class Detector {
 
   Calibration cal_;
   ScanGrid grid_;
+  std::vector<double> m_per_px_, rad_per_px_;  // per cm of floor distance
   cv::Mat valid_half_;     // half-resolution mask of the annulus scanned for blobs
   cv::Mat cls_half_, mask_, labels_, stats_cc_, centroids_;
   std::vector<std::vector<std::uint8_t>> radial_cls_;  // classes along each radial line
