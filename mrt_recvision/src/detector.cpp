@@ -34,6 +34,7 @@ Detector::Detector(const Calibration& cal) : cal_(cal), grid_(cal.camera, cal.de
     m_per_px_.push_back(std::isfinite(r) ? d2 - d : 1.0);
     rad_per_px_.push_back(std::isfinite(r) && r > 1.0 ? 1.0 / r : M_PI);
   }
+  r_inner_ = cam.profile.radius(std::atan2(o.min_distance, cam.height));
   radial_cls_.resize(grid_.radial().size());
   for (std::size_t i = 0; i < grid_.radial().size(); ++i) radial_cls_[i].resize(grid_.radial()[i].points.size());
 }
@@ -119,10 +120,13 @@ void Detector::find_lines(const std::uint8_t* img, std::vector<Detection>& out) 
   }
 }
 
-bool Detector::ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector3d& dir, int& count) const {
+bool Detector::ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector3d& dir, int& count,
+                              double& r_min, double& r_max) const {
   const auto& cam = cal_.camera;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   count = 0;
+  r_min = 1e9;
+  r_max = 0.0;
   for (int v = roi.y; v < roi.y + roi.height; ++v) {
     const std::uint8_t* row = f.rgb.ptr<std::uint8_t>(v);
     for (int u = roi.x; u < roi.x + roi.width; ++u) {
@@ -134,6 +138,8 @@ bool Detector::ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector
       // so the mean direction is the axis of the ball's cone of rays.
       const double dth = cam.profile.theta(r + 0.5) - cam.profile.theta(r - 0.5);
       if (!std::isfinite(dth)) continue;
+      r_min = std::min(r_min, r);
+      r_max = std::max(r_max, r);
       sum += d * (std::sin(cam.profile.theta(r)) * dth / r);
       ++count;
     }
@@ -167,10 +173,23 @@ void Detector::find_ball(const Frame& f, std::vector<Detection>& out) {
   roi &= cv::Rect(0, 0, cam.width, cam.height_px);
   Eigen::Vector3d dir;
   int count = 0;
-  if (!ball_direction(f, roi, dir, count) || count < o.min_ball_pixels || dir.z() >= -1e-6) return;
+  double r_min = 0, r_max = 0;
+  if (!ball_direction(f, roi, dir, count, r_min, r_max) || count < o.min_ball_pixels || dir.z() >= -1e-6) return;
   // The ball's centre is o.ball_radius above the floor on that ray.
   const double s = (cam.height - o.ball_radius) / -dir.z();
-  Detection d = make("Ball", ColorClass::kOrange, s * dir.x(), s * dir.y(), 0.5);
+  double bx = s * dir.x(), by = s * dir.y(), px = 0.5;
+  // A ball reaching into the body's blind zone is partly hidden: its
+  // centroid is biased outwards. Use the outermost ray instead, tangent to
+  // the far side of the ball: d = (h - R) tan(theta) - R / cos(theta).
+  const double th_out = cam.profile.theta(r_max + 0.5);
+  if (r_min <= r_inner_ + 1.5 && std::isfinite(th_out) && th_out < M_PI / 2) {
+    const double d = (cam.height - o.ball_radius) * std::tan(th_out) - o.ball_radius / std::cos(th_out);
+    const double b = std::atan2(dir.y(), dir.x());
+    bx = d * std::cos(b);
+    by = d * std::sin(b);
+    px = 1.0;
+  }
+  Detection d = make("Ball", ColorClass::kOrange, bx, by, px);
   d.reliability = std::min(1.0, count / (5.0 * o.min_ball_pixels));
   out.push_back(d);
 }

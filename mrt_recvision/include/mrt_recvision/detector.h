@@ -65,7 +65,10 @@ class Detector {
   void find_ball(const Frame& f, std::vector<Detection>& out);
   void find_goals(std::vector<Detection>& out);
   void find_robots(std::vector<Detection>& out);
-  bool ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector3d& dir, int& count) const;
+  // Mean ray of the orange pixels in `roi` (solid-angle weighted), their
+  // count and their smallest and largest image radius.
+  bool ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector3d& dir, int& count, double& r_min,
+                      double& r_max) const;
   // A detection at floor point (x, y) of the viewpoint frame, with the
   // radial spread of `px` pixels there.
   Detection make(const char* cls, ColorClass c, double x, double y, double px) const;
@@ -73,6 +76,7 @@ class Detector {
   Calibration cal_;
   ScanGrid grid_;
   std::vector<double> m_per_px_, rad_per_px_;  // per cm of floor distance
+  double r_inner_ = 0;     // image radius of detector.min_distance (the body's blind zone)
   cv::Mat valid_half_;     // half-resolution mask of the annulus scanned for blobs
   cv::Mat cls_half_, mask_, labels_, stats_cc_, centroids_;
   std::vector<std::vector<std::uint8_t>> radial_cls_;  // classes along each radial line
