@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "mrt_common/yaml_reader.h"
 #include "mrt_recvision/detector.h"
 #include "synthetic_scene.h"
 
@@ -162,4 +163,24 @@ TEST(FrameFromRaw, ConvertsBgrAndRefusesOtherEncodings) {
   EXPECT_FALSE(frame_from_raw("mono8", 2, 1, 6, bgr, 6, 0, f, why));
   EXPECT_NE(why.find("mono8"), std::string::npos);
   EXPECT_FALSE(frame_from_raw("rgb8", 2, 2, 6, bgr, 6, 0, f, why));  // buffer holds one row only
+}
+
+TEST(Detector, BallPartlyHiddenByTheBodyIsMeasuredFromItsOuterEdge) {
+  // The body hides everything inside the image radius of 0.62 m; a ball at
+  // 0.63 m (floor extent 0.52 ... 0.74 m) is cut: its visible centroid lies
+  // outwards. The detector's blind zone is set to the same 0.62 m.
+  std::string text = mrt::common::read_file(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml");
+  text.replace(text.find("min_distance: 0.35"), 18, "min_distance: 0.62");
+  Detector det(parse_calibration(text, "hidden.yaml"));
+  const Calibration c = det.calibration();
+  for (double d : {0.63, 0.64}) {
+    ts::Scene s;
+    s.body_radius = 0.62;
+    s.ball = ts::SceneBall{Eigen::Vector2d(0.0, d), 0.11};
+    const auto balls = of_class(det.process(frame_of(ts::render(c.camera, s, 0, 0, 0))), "Ball");
+    ASSERT_EQ(balls.size(), 1u) << d;
+    // Its centroid alone gives 0.6461 at 0.64 m (1 % long); the outer edge 0.6412.
+    EXPECT_NEAR(balls[0].distance, d, 0.005 * d) << d;
+    EXPECT_NEAR(balls[0].bearing, M_PI / 2, 0.02);
+  }
 }
