@@ -37,7 +37,8 @@ void read_color(const YamlReader& r, const YAML::Node& n, ColorTable& table, std
   }
   if (n["samples"]) {
     ColorTable s;
-    for (const YAML::Node& e : r.sequence(n["samples"], "samples")) {
+    const YAML::Node list = n["samples"];  // sequence() returns its argument: keep it alive
+    for (const YAML::Node& e : r.sequence(list, "samples")) {
       const auto v = r.numbers(e, "samples", 3);
       for (double x : v)
         if (x < 0 || x > 255 || x != std::floor(x)) r.fail(e, "expected integer RGB values in [0, 255]");
@@ -55,7 +56,8 @@ DetectorOptions read_detector(const YamlReader& r, const YAML::Node& n) {
   if (n["radial_lines"]) o.radial_lines = int(r.integer(n["radial_lines"], "radial_lines", 8, 4096));
   if (n["circles"]) {
     o.circles.clear();
-    for (const YAML::Node& e : r.sequence(n["circles"], "circles")) o.circles.push_back(r.positive(e, "circles"));
+    const YAML::Node list = n["circles"];
+    for (const YAML::Node& e : r.sequence(list, "circles")) o.circles.push_back(r.positive(e, "circles"));
   }
   o.min_distance = r.non_negative(n, "min_distance", o.min_distance);
   o.max_distance = r.positive(n, "max_distance", o.max_distance);
@@ -97,7 +99,8 @@ Calibration parse_calibration(const std::string& yaml_text, const std::string& f
     if (m.size() == 3) cal.mount_yaw = r.number(m[2], "mount");
   }
   std::vector<ColorTable> samples;
-  for (const YAML::Node& c : r.sequence(r.required(root, "colors", "calibration"), "colors"))
+  const YAML::Node colors = r.required(root, "colors", "calibration");
+  for (const YAML::Node& c : r.sequence(colors, "colors"))
     read_color(r, c, cal.colors, samples);
   for (const ColorTable& s : samples) cal.colors.overlay(s);
   if (root["lut"]) {
