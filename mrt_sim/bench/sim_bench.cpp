@@ -9,6 +9,7 @@
 
 #include "mrt_common/angle.h"
 #include "mrt_common/cli.h"
+#include "mrt_sim/camera.h"
 #include "mrt_sim/simulator.h"
 
 using namespace mrt::sim;
@@ -49,6 +50,51 @@ World msl_world(const std::string& path, int n) {
     w.robots.push_back(r);
   }
   return w;
+}
+
+// The rendered camera of the world's first robot: frames per second with
+// the world file's effects and without, and the simulator of one robot
+// rendering its camera at its rate, as a real-time factor.
+void camera_metrics(const std::string& path, double secs, double kin) {
+  Simulator sim(msl_world(path, 1));
+  const RobotConfig& rc = sim.robots()[0].config;
+  const CameraConfig& cc = rc.sensors.camera;
+  cv::Mat img;
+  for (const bool effects : {true, false}) {
+    CameraOptions o = camera_options(rc, 1);
+    if (!effects) o.effects = CameraEffects();
+    CameraRenderer r(sim.world(), cc.model, o);
+    double a = 0.0;
+    const double fps = rate(secs, 5, [&] {
+      a += 0.05;
+      r.render(Pose2D(-2.0 + std::cos(a), std::sin(a), a), sim.other_robots(0), a, img, {1.0, 0.0, 0.5});
+    });
+    const std::string name = std::string("camera_render_msl") + (effects ? "" : "_no_effects");
+    print(name.c_str(), 1000.0 / fps, "ms/frame");
+    print((name + "_rate").c_str(), fps, "frames/s");
+    print((name + "_vs_kinematics").c_str(), fps / kin, "ratio");
+  }
+  CameraRenderer r(sim.world(), cc.model, camera_options(rc, 1));
+  sim.set_twist(0, {0.5, 0.0, 0.25});
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const double t0 = sim.time();
+  double elapsed = 0.0;
+  long long frames = 0;
+  do {
+    for (int i = 0; i < 100; ++i) {
+      sim.step();
+      const RobotState& s = sim.robots()[0];
+      if (s.camera_ready) {
+        r.render(s.pose, sim.other_robots(0), sim.time(), img, s.twist);
+        ++frames;
+      }
+    }
+    elapsed = std::chrono::duration<double>(clock::now() - start).count();
+  } while (elapsed < secs);
+  const std::string size = std::to_string(cc.model.width) + "x" + std::to_string(cc.model.height_px);
+  std::printf("sim_with_camera_msl_1_robot_realtime_factor: %.4g x (%s at %g Hz, %lld frames)\n",
+              (sim.time() - t0) / elapsed, size.c_str(), cc.rate, frames);
 }
 
 }  // namespace
@@ -117,5 +163,6 @@ int main(int argc, char** argv) {
   print("vision_msl", vision, "calls/s");
   print("vision_msl_objects", static_cast<double>(seen), "objects");
   print("vision_msl_vs_kinematics", vision / kin, "ratio");
+  if (robot.sensors.camera.rate > 0.0) camera_metrics(path, secs, kin);
   return 0;
 }

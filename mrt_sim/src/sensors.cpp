@@ -8,6 +8,7 @@
 
 namespace mrt::sim {
 
+using mrt::common::kPi;
 using mrt::common::normalize_angle;
 
 namespace {
@@ -230,6 +231,34 @@ std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherR
       const double t = (j + 0.5) / n;
       see({l.a.x + t * ex, l.a.y + t * ey}, none, "line", "Line", "white");
     }
+  }
+  return out;
+}
+
+std::vector<SeenObject> realistic_percepts(const std::vector<SeenObject>& ideal, const SensorsConfig& cfg,
+                                           std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double range = cfg.vision_range;
+  std::vector<SeenObject> out;
+  for (const SeenObject& o : ideal) {
+    const double f = std::min(1.0, o.distance / range);
+    if (uniform(rng) < cfg.vision_miss_near + (cfg.vision_miss_far - cfg.vision_miss_near) * f) continue;
+    SeenObject r = o;
+    r.name.clear();
+    const double sd = cfg.vision_distance_noise * o.distance * (1.0 + f);
+    r.distance = std::max(0.0, o.distance + sd * normal(rng));
+    r.bearing = normalize_angle(o.bearing + cfg.vision_bearing_noise * normal(rng));
+    out.push_back(r);
+  }
+  static const char* const kClass[] = {"Ball", "Robot", "GoalPost", "Obstacle"};
+  static const char* const kColor[] = {"orange", "black", "yellow", ""};
+  const int n = cfg.vision_false_positives > 0.0
+                    ? std::poisson_distribution<int>(cfg.vision_false_positives)(rng) : 0;
+  for (int k = 0; k < n; ++k) {
+    const int c = std::uniform_int_distribution<int>(0, 3)(rng);
+    const double d = 0.5 + (range - 0.5) * uniform(rng);
+    out.push_back({"", kClass[c], kColor[c], std::max(0.0, d), normalize_angle(2.0 * kPi * uniform(rng))});
   }
   return out;
 }

@@ -252,6 +252,16 @@ void Simulator::move_ball() {
   }
 }
 
+std::vector<OtherRobot> Simulator::other_robots(std::size_t i) const {
+  std::vector<OtherRobot> others;
+  for (std::size_t j = 0; j < robots_.size(); ++j) {
+    if (j == i) continue;
+    const RobotState& o = robots_[j];
+    others.push_back({o.config.name, {o.pose.x, o.pose.y}, o.config.base.body_radius, o.config.color});
+  }
+  return others;
+}
+
 void Simulator::update_sensors(std::size_t i) {
   RobotState& r = robots_[i];
   const SensorsConfig& cfg = r.config.sensors;
@@ -260,6 +270,7 @@ void Simulator::update_sensors(std::size_t i) {
     return p > 0 && steps_ % p == 0;
   };
   r.mice_ready = r.encoders_ready = r.sonar_ready = r.vision_ready = r.dgps_ready = false;
+  r.camera_ready = fires(cfg.camera.rate);
 
   if (fires(cfg.rate_mice) && mice_[i].size() >= 2) {
     r.mice_ready = true;
@@ -295,8 +306,10 @@ void Simulator::update_sensors(std::size_t i) {
     }
     if (vision) {
       r.vision_ready = true;
+      std::vector<SeenObject> no_more_noise;  // realistic percepts carry their own
       r.vision = vision_percepts(world_, others, r.pose, cfg);
-      for (SeenObject& o : r.vision) {
+      if (cfg.vision_realistic) r.vision = realistic_percepts(r.vision, cfg, rng_);
+      for (SeenObject& o : cfg.vision_realistic ? no_more_noise : r.vision) {
         const double dn = cfg.vision_distance_noise * o.distance;
         if (dn > 0.0) o.distance = std::max(0.0, o.distance + dn * std::normal_distribution<double>()(rng_));
         if (cfg.vision_bearing_noise > 0.0)

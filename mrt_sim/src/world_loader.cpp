@@ -7,8 +7,10 @@
 #include <stdexcept>
 
 #include "mrt_common/angle.h"
+#include "mrt_common/omni_camera_yaml.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common/yaml_reader.h"
+#include "mrt_sim/description.h"
 #include "mrt_sim/world.h"
 
 namespace mrt::sim {
@@ -25,9 +27,11 @@ using YAML::Node;
 // (the strict readers: mrt_common/yaml_reader.h).
 class Loader : private mrt::common::YamlReader {
  public:
-  using YamlReader::YamlReader;
   using YamlReader::error;
   using YamlReader::load;
+
+  Loader(const std::string& file, std::string description_dir)
+      : YamlReader(file), description_dir_(std::move(description_dir)) {}
 
   World world(const Node& root) const {
     if (!root.IsMap()) {
@@ -35,7 +39,7 @@ class Loader : private mrt::common::YamlReader {
       fail(root, "expected a map at the top level");
     }
     map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
-                        "movers", "robots"});
+                        "movers", "robots", "line_width"});
     World w;
     w.file = file();
     w.name = string(root, "name", "", true, "world");
@@ -47,6 +51,7 @@ class Loader : private mrt::common::YamlReader {
 
     if (const Node n = root["walls"])
       for (const Node& e : sequence(n, "walls")) w.walls.push_back(segment(e, "walls"));
+    w.line_width = positive(root, "line_width", w.line_width);
     if (const Node n = root["field_lines"])
       for (const Node& e : sequence(n, "field_lines")) field_line(e, w.field_lines);
     if (const Node n = root["posts"])
@@ -170,7 +175,13 @@ class Loader : private mrt::common::YamlReader {
     r.color = string(n, "color", r.color, false, "robots");
     const auto p = numbers(required(n, "pose", "robots"), "pose", 3);
     r.initial_pose = Pose2D(p[0], p[1], deg_to_rad(p[2]));
-    r.sensors = sensors(n["sensors"], r.base);
+    std::optional<DescriptionMounts> d;
+    try {
+      d = read_description(description_dir_, r.base.name);
+    } catch (const std::runtime_error& e) {
+      fail(bn, e.what());
+    }
+    r.sensors = sensors(n["sensors"], r.base, d);
     return r;
   }
 
@@ -198,22 +209,26 @@ class Loader : private mrt::common::YamlReader {
     }
   }
 
-  SensorsConfig sensors(const Node& n, const BaseConfig& base) const {
+  SensorsConfig sensors(const Node& n, const BaseConfig& base, const std::optional<DescriptionMounts>& d) const {
     SensorsConfig s;
     s.rate_mice = s.rate_encoders = s.rate_sonar = s.rate_vision = s.rate_dgps = 0.0;
     if (!n) return s;
-    map(n, "sensors", {"mice", "encoders", "sonar", "vision", "dgps"});
-    if (const Node m = n["mice"]) mice(m, s);
+    map(n, "sensors", {"mice", "encoders", "sonar", "vision", "dgps", "camera", "camera_render"});
+    if (const Node m = n["mice"]) mice(m, s, d);
     if (const Node e = n["encoders"]) encoders(e, s);
     if (const Node so = n["sonar"]) sonar(so, base, s);
     if (const Node v = n["vision"]) vision(v, s);
-    if (const Node d = n["dgps"]) dgps(d, s);
+    if (const Node g = n["dgps"]) dgps(g, s);
+    if (const Node c = n["camera"]) camera(c, n["camera_render"], s, d);
+    else if (const Node f = n["camera_render"]) fail(f, "'camera_render' needs a 'camera' section");
     return s;
   }
 
   // The two mice: shared settings, then per mouse (left, right) a mount and
   // overrides.
-  void mice(const Node& m, SensorsConfig& s) const {
+  // The mounts come from the robot's URDF when it has the mouse link; the
+  // world file's x, y, theta override them.
+  void mice(const Node& m, SensorsConfig& s, const std::optional<DescriptionMounts>& d) const {
     map(m, "mice", {"rate", "counts_per_m", "noise", "fault_rate", "fault_max_fraction", "left", "right"});
     s.rate_mice = non_negative(m, "rate", 50.0);
     MouseConfig shared;
@@ -225,10 +240,12 @@ class Loader : private mrt::common::YamlReader {
       MouseConfig c = shared;
       c.id = id;
       c.mount = Pose2D(0.0, c.id == "left" ? 0.1 : -0.1, 0.0);
+      const std::optional<LinkMount>& urdf = !d ? std::nullopt : c.id == "left" ? d->mouse_left : d->mouse_right;
+      if (urdf) c.mount = Pose2D(urdf->position.x(), urdf->position.y(), urdf->yaw);
       if (const Node e = m[id]) {
         map(e, id, {"x", "y", "theta", "counts_per_m", "noise", "fault_rate", "fault_max_fraction"});
         c.mount = Pose2D(number(e, "x", c.mount.x), number(e, "y", c.mount.y),
-                         e["theta"] ? deg_to_rad(number(e["theta"], "theta")) : 0.0);
+                         e["theta"] ? deg_to_rad(number(e["theta"], "theta")) : c.mount.theta);
         c.counts_per_m = positive(e, "counts_per_m", c.counts_per_m);
         c.noise = non_negative(e, "noise", c.noise);
         c.fault_rate = fraction(e, "fault_rate", c.fault_rate);
@@ -245,13 +262,54 @@ class Loader : private mrt::common::YamlReader {
     if (e["ticks_per_rev"]) s.ticks_per_rev = static_cast<int>(integer(e["ticks_per_rev"], "ticks_per_rev", 1, 1000000000));
   }
 
+  // The omni_camera_yaml.h block plus `rate`; the viewpoint's x, y (and its
+  // height unless the block gives `viewpoint_height`) from the URDF's
+  // omni_mirror link; the image effects from `camera_render`.
+  void camera(const Node& c, const Node& fx, SensorsConfig& s, const std::optional<DescriptionMounts>& d) const {
+    CameraConfig& cam = s.camera;
+    cam.model = mrt::common::read_omni_camera(*this, c);
+    cam.rate = non_negative(c, "rate", 30.0);
+    if (d && d->omni_mirror) {
+      const Eigen::Vector3d& p = d->omni_mirror->position;
+      cam.mount_x = p.x(), cam.mount_y = p.y();
+      if (!c["viewpoint_height"]) {
+        if (!(p.z() > 0.0)) fail(c, "the URDF's omni_mirror is not above the floor: give 'viewpoint_height'");
+        cam.model.height = p.z();
+        cam.model.profile = mrt::common::read_mirror_profile(*this, c["mirror"], p.z());
+      }
+    }
+    if (!fx) return;
+    map(fx, "camera_render", {"enabled", "x", "y", "noise", "illumination", "illumination_scale", "flicker",
+                              "flicker_period", "exposure", "white_balance_drift", "white_balance_period"});
+    if (!boolean(fx, "enabled", true)) cam.rate = 0.0;
+    cam.mount_x = number(fx, "x", cam.mount_x);
+    cam.mount_y = number(fx, "y", cam.mount_y);
+    CameraEffects& e = cam.effects;
+    e.noise = non_negative(fx, "noise", e.noise);
+    e.illumination = bounded(fx, "illumination", e.illumination, 0.0, false, 0.9);
+    e.illumination_scale = positive(fx, "illumination_scale", e.illumination_scale);
+    e.flicker = bounded(fx, "flicker", e.flicker, 0.0, false, 0.9);
+    e.flicker_period = positive(fx, "flicker_period", e.flicker_period);
+    e.exposure = non_negative(fx, "exposure", e.exposure);
+    e.white_balance_drift = bounded(fx, "white_balance_drift", e.white_balance_drift, 0.0, false, 0.9);
+    e.white_balance_period = positive(fx, "white_balance_period", e.white_balance_period);
+  }
+
   void vision(const Node& v, SensorsConfig& s) const {
-    map(v, "vision", {"rate", "range", "distance_noise", "bearing_noise", "line_point_spacing"});
+    map(v, "vision", {"rate", "range", "distance_noise", "bearing_noise", "line_point_spacing", "model",
+                      "miss_near", "miss_far", "false_positives"});
     s.rate_vision = non_negative(v, "rate", 10.0);
     s.vision_range = positive(v, "range", s.vision_range);
     s.vision_distance_noise = non_negative(v, "distance_noise", s.vision_distance_noise);
     s.vision_bearing_noise = deg_to_rad(non_negative(v, "bearing_noise", mrt::common::rad_to_deg(s.vision_bearing_noise)));
     s.line_point_spacing = bounded(v, "line_point_spacing", s.line_point_spacing, 0.01, false);
+    const std::string model = string(v, "model", "ideal", false, "vision");
+    if (model != "ideal" && model != "realistic")
+      fail(v["model"], "expected 'model' ideal or realistic, got '" + model + "'");
+    s.vision_realistic = model == "realistic";
+    s.vision_miss_near = fraction(v, "miss_near", s.vision_miss_near);
+    s.vision_miss_far = fraction(v, "miss_far", s.vision_miss_far);
+    s.vision_false_positives = bounded(v, "false_positives", s.vision_false_positives, 0.0, false, 100.0);
   }
 
   void dgps(const Node& d, SensorsConfig& s) const {
@@ -294,12 +352,15 @@ class Loader : private mrt::common::YamlReader {
       fail(n, "missing required key 'count' or 'mounts' in 'sonar'");
     }
   }
+
+ private:
+  std::string description_dir_;
 };
 
 }  // namespace
 
-World parse_world(const std::string& yaml_text, const std::string& file) {
-  const Loader loader(file);
+World parse_world(const std::string& yaml_text, const std::string& file, const std::string& description_dir) {
+  const Loader loader(file, description_dir);
   const Node root = loader.load(yaml_text, "YAML syntax error: ");
   try {
     return loader.world(root);
@@ -308,8 +369,8 @@ World parse_world(const std::string& yaml_text, const std::string& file) {
   }
 }
 
-World load_world(const std::string& path) {
-  return parse_world(mrt::common::read_file(path, "cannot open world file"), path);
+World load_world(const std::string& path, const std::string& description_dir) {
+  return parse_world(mrt::common::read_file(path, "cannot open world file"), path, description_dir);
 }
 
 }  // namespace mrt::sim

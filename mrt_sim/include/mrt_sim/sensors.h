@@ -87,4 +87,17 @@ struct OtherRobot {
 std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherRobot>& others,
                                         const Pose2D& robot, const SensorsConfig& cfg);
 
+/// What a real vision system reports instead of the ideal percepts
+/// (world file `vision: {model: realistic}`), drawn from `rng`: class and
+/// colour only (no names); each object missed with a probability growing
+/// linearly from cfg.vision_miss_near at the robot to cfg.vision_miss_far
+/// at cfg.vision_range; distance noise growing with distance, 1 sigma =
+/// distance_noise * d * (1 + d / range); bearing noise as configured;
+/// plus a Poisson number (mean cfg.vision_false_positives) of false
+/// objects (a Ball, Robot, GoalPost or Obstacle in a plausible colour,
+/// uniform in distance over [0.5, range] and in bearing). Occlusion is that
+/// of `ideal` (vision_percepts).
+std::vector<SeenObject> realistic_percepts(const std::vector<SeenObject>& ideal, const SensorsConfig& cfg,
+                                           std::mt19937_64& rng);
+
 }  // namespace mrt::sim

@@ -41,6 +41,7 @@ struct RobotState {
   std::vector<SeenObject> vision;   // noisy
   bool dgps_ready = false;
   Point2D dgps;                     // noisy position in the world frame
+  bool camera_ready = false;        // a camera frame is due (render it with CameraRenderer)
 };
 
 class Simulator {
@@ -72,6 +73,10 @@ class Simulator {
   /// movers (a mover waits rather than walk into a robot) and the ball, then
   /// updates every sensor whose period has elapsed.
   void step();
+
+  /// The robots other than `robot`, as its sensors see them (name,
+  /// position, body radius, colour).
+  std::vector<OtherRobot> other_robots(std::size_t robot) const;
 
   /// Steps between two firings of a sensor of rate `hz` (0 when off):
   /// max(1, round(1 / (hz * dt))).

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/omni_camera.h"
 #include "mrt_common/pose2d.h"
 #include "mrt_sim/kinematics.h"
 
@@ -88,6 +89,31 @@ struct SonarConfig {
   double max_range = 5.0;     // m
 };
 
+/// Image effects of the rendered camera (world file `sensors.camera_render`).
+/// Every effect is off at 0.
+struct CameraEffects {
+  double noise = 0.0;                  // std-dev of additive pixel noise, 8-bit levels
+  double illumination = 0.0;           // relative brightness variation over the field (+-)
+  double illumination_scale = 6.0;     // m, wavelength of that variation
+  double flicker = 0.0;                // relative brightness variation in time (+-)
+  double flicker_period = 10.0;        // s
+  double exposure = 0.0;               // s; motion during it blurs the image (blur at speed)
+  double white_balance_drift = 0.0;    // relative per-channel gain drift (+-)
+  double white_balance_period = 30.0;  // s
+};
+
+/// The rendered omnidirectional camera of a robot (world file
+/// `sensors.camera`, the mrt_common/omni_camera_yaml.h block, plus
+/// `sensors.camera_render`). The viewpoint is at (mount_x, mount_y,
+/// model.height) in base_link, read from the robot's URDF (link
+/// omni_mirror) when mrt_description has one.
+struct CameraConfig {
+  double rate = 0.0;                   // Hz, 0 = off
+  mrt::common::OmniCamera model;
+  double mount_x = 0.0, mount_y = 0.0; // m, viewpoint in base_link
+  CameraEffects effects;
+};
+
 struct SensorsConfig {
   double rate_mice = 50.0;      // Hz, 0 = off
   std::vector<MouseConfig> mice;
@@ -102,10 +128,15 @@ struct SensorsConfig {
   double vision_distance_noise = 0.02;  // relative: sigma = noise * distance
   double vision_bearing_noise = 0.01;   // rad
   double line_point_spacing = 0.25;     // m between sampled field-line points
+  bool vision_realistic = false;        // `model: realistic` (see realistic_percepts)
+  double vision_miss_near = 0.02;       // probability of missing an object at distance 0 ...
+  double vision_miss_far = 0.3;         // ... and at `range` (linear in between)
+  double vision_false_positives = 0.2;  // mean false objects per frame (Poisson)
   double rate_dgps = 0.0;       // Hz, 0 = off
   double dgps_noise = 0.05;     // m, std-dev per axis
   double datum_latitude = 45.478;   // deg, world origin (for NavSatFix)
   double datum_longitude = 9.227;   // deg
+  CameraConfig camera;          // rate 0 = no camera
 };
 
 struct RobotConfig {
@@ -122,6 +153,7 @@ struct World {
   double min_x = -10, min_y = -10, max_x = 10, max_y = 10;  // bounds, m
   std::vector<Segment> walls;
   std::vector<Segment> field_lines;
+  double line_width = 0.125;            // m, painted width of the field lines (MSL: 12.5 cm)
   std::vector<Post> posts;
   std::vector<Goal> goals;
   Ball ball;
@@ -144,12 +176,19 @@ std::vector<Segment> solid_segments(const World& w);
 /// Distance from `p` to the closest point of `s`; that point in `closest`.
 double distance_to_segment(const Point2D& p, const Segment& s, Point2D* closest = nullptr);
 
+/// Directory of mrt_description's URDF files built into mrt_sim_core (see
+/// description.h).
+std::string default_description_dir();
+
 /// Loads a world file. Throws mrt::common::ParseError naming the file, the
 /// line (and column) of the offending node and what was expected. The
-/// format is documented in mrt_sim/README.md.
-World load_world(const std::string& path);
+/// format is documented in mrt_sim/README.md. Sensor mounts (camera
+/// viewpoint, mice) come from `<description_dir>/<base>.urdf` when that
+/// file exists and has the link ("" = no URDF).
+World load_world(const std::string& path, const std::string& description_dir = default_description_dir());
 
 /// Same, from YAML text; `file` is used in error messages.
-World parse_world(const std::string& yaml_text, const std::string& file);
+World parse_world(const std::string& yaml_text, const std::string& file,
+                  const std::string& description_dir = default_description_dir());
 
 }  // namespace mrt::sim

@@ -43,6 +43,7 @@ RobotInterface::RobotInterface(ros::NodeHandle& nh, Simulator& sim, std::size_t 
     for (std::size_t i = 0; i < s.sonars.size(); ++i)
       sonar_pubs_.push_back(rnh.advertise<sensor_msgs::Range>("sonar/" + std::to_string(i), 20));
   if (s.rate_dgps > 0.0) dgps_pub_ = rnh.advertise<sensor_msgs::NavSatFix>("dgps/fix", 20);
+  if (s.camera.rate > 0.0) camera_ = std::make_unique<CameraInterface>(rnh, sim_, index_, frames_.prefix);
 }
 
 void RobotInterface::accepted() {
@@ -147,6 +148,7 @@ void RobotInterface::publish(const ros::Time& stamp, bool ground_truth, bool pat
       percept_markers_pub_.publish(percept_markers(r.vision, r.pose, opt_.world_frame, stamp));
   }
   if (r.dgps_ready && dgps_pub_) dgps_pub_.publish(to_navsat(r.dgps, s, frames_.gps(), stamp));
+  if (camera_) camera_->publish(stamp);
 }
 
 void RobotInterface::static_transforms(std::vector<geometry_msgs::TransformStamped>& out) const {
@@ -159,6 +161,7 @@ void RobotInterface::static_transforms(std::vector<geometry_msgs::TransformStamp
     out.push_back(to_transform(m.mount, frames_.sensor_parent, frames_.mouse(m.id), stamp));
   if (s.rate_dgps > 0.0)
     out.push_back(to_transform(Pose2D(), frames_.sensor_parent, frames_.gps(), stamp));
+  if (camera_) out.push_back(camera_->mount_transform(frames_.sensor_parent));
 }
 
 void RobotInterface::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) const {
@@ -179,6 +182,10 @@ void RobotInterface::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) co
   s.add("theta [rad]", r.pose.theta);
   s.add("wheels saturated", r.saturated);
   s.add("bumped", r.bumped);
+  if (camera_) {
+    s.add("camera frames", camera_->frames());
+    s.add("camera render time [ms]", camera_->render_ms());
+  }
 }
 
 }  // namespace mrt::sim::node

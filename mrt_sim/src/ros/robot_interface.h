@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include <mrt_msgs/WheelCommand.h>
 #include <ros/ros.h>
 
+#include "camera_interface.h"
 #include "conversions.h"
 #include "markers.h"
 #include "mrt_sim/simulator.h"
@@ -62,6 +64,8 @@ class RobotInterface {
   ros::Publisher ground_truth_pub_, path_pub_, mice_pub_, wheel_state_pub_, percepts_pub_,
       percept_markers_pub_, dgps_pub_, joint_state_pub_;
   std::vector<ros::Publisher> sonar_pubs_;
+
+  std::unique_ptr<CameraInterface> camera_;  // when the robot has a camera
 
   std::deque<geometry_msgs::PoseStamped> trail_;
 

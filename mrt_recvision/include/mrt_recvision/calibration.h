@@ -1,0 +1,56 @@
+// The calibration file of RecVision (ROS-free): the camera model (the
+// shared `camera:` block of mrt_common/omni_camera_yaml.h), the colour
+// classes, the viewpoint's mount on the robot and the detector's options.
+// Format (README.md, "Calibration file"):
+//
+//   camera: {...}                    # as in the simulator's world files
+//   mount: [0.0, 0.0, 0.0]           # viewpoint in base_link: x, y (m), yaw (rad)
+//   colors:                          # in order of precedence
+//     - {class: white, hsv: [0, 360, 0, 0.2, 0.65, 1]}   # h deg, s, v in [0, 1]
+//     - {class: orange, rgb: [200, 255, 60, 170, 0, 60]} # r, g, b min/max
+//     - {class: cyan, samples: [[0, 200, 220]]}          # labelled RGB samples
+//   lut: table.png                   # optional (recvision_calibrate); relative to this file
+//   detector: {...}                  # DetectorOptions, all optional
+//
+// Every error is a mrt::common::ParseError naming file:line:column.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mrt_common/omni_camera.h"
+#include "mrt_recvision/color_table.h"
+
+namespace mrt::recvision {
+
+/// What the detector looks for and how far (distances in metres on the floor).
+struct DetectorOptions {
+  int radial_lines = 360;            // radial scan lines, evenly spaced in bearing
+  std::vector<double> circles = {0.8, 1.2, 1.6, 2.0, 2.5, 3.0};  // circular scan lines at these distances
+  double min_distance = 0.35;        // the robot's own body hides everything closer
+  double max_distance = 8.0;         // nothing is reported farther
+  double line_max_distance = 4.0;    // field-line points only up to here
+  double line_min_width = 0.03;      // a white run between green is a line if its ground
+  double line_max_width = 0.25;      //   width lies in [min, max]
+  int line_gap = 2;                  // unclassified pixels allowed between green and white
+  int max_line_points = 400;         // evenly thinned beyond this
+  double ball_radius = 0.11;
+  double robot_radius = 0.25;
+  int min_ball_pixels = 3;           // connected-component areas, full-resolution pixels
+  int min_goal_pixels = 40;
+  int min_robot_pixels = 60;
+};
+
+struct Calibration {
+  std::string file;
+  mrt::common::OmniCamera camera;
+  ColorTable colors;
+  double mount_x = 0.0, mount_y = 0.0, mount_yaw = 0.0;
+  DetectorOptions detector;
+};
+
+Calibration load_calibration(const std::string& path);
+/// Same from YAML text; `file` names it in errors and anchors a relative `lut:`.
+Calibration parse_calibration(const std::string& yaml_text, const std::string& file);
+
+}  // namespace mrt::recvision

@@ -1,0 +1,222 @@
+// recvision_node: camera images in, percepts and a debug image out.
+// Thin ROS layer over the core (mrt_recvision/detector.h): parameters are
+// read once into the calibration, each sensor_msgs/Image becomes a Frame,
+// each Detection a PerceptObject with the attributes of mrt_sim's percepts.
+// The viewpoint's mount is taken from tf (base_frame <- the image's
+// frame_id), falling back to the calibration file's `mount:`.
+// Topics, parameters and diagnostics: README.md.
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <image_transport/image_transport.h>
+#include <mrt_msgs/Percept.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/params.h"
+#include "mrt_recvision/detector.h"
+
+namespace mrt::recvision {
+namespace {
+
+mrt_msgs::Attribute numeric(const std::string& name, double value, double variability, double reliability) {
+  mrt_msgs::Attribute a;
+  a.name = name;
+  a.value = value;
+  a.variability = variability;
+  a.reliability = reliability;
+  return a;
+}
+
+mrt_msgs::Percept to_percept(const std::vector<Detection>& dets, const std_msgs::Header& image_header,
+                             const std::string& frame, const std::string& robot) {
+  mrt_msgs::Percept p;
+  p.header.stamp = image_header.stamp;
+  p.header.frame_id = frame;
+  p.sensor = "omnivision";
+  p.robot = robot;
+  for (const Detection& d : dets) {
+    mrt_msgs::PerceptObject o;
+    o.membership_class = d.membership_class;
+    const double sxy = std::hypot(d.sigma_distance, d.distance * d.sigma_bearing);
+    o.attributes.push_back(numeric("distance", d.distance, d.sigma_distance, d.reliability));
+    o.attributes.push_back(numeric("bearing", d.bearing, d.sigma_bearing, d.reliability));
+    o.attributes.push_back(numeric("x", d.x, sxy, d.reliability));
+    o.attributes.push_back(numeric("y", d.y, sxy, d.reliability));
+    mrt_msgs::Attribute c;
+    c.name = "color";
+    c.symbol = color_name(d.color);
+    c.reliability = d.reliability;
+    o.attributes.push_back(c);
+    p.objects.push_back(std::move(o));
+  }
+  return p;
+}
+
+// rviz view of the percepts: one marker per detection in base_link, in its colour.
+visualization_msgs::MarkerArray to_markers(const std::vector<Detection>& dets, const std_msgs::Header& h,
+                                           const std::string& frame) {
+  visualization_msgs::MarkerArray arr;
+  visualization_msgs::Marker clear;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  arr.markers.push_back(clear);
+  visualization_msgs::Marker lines;
+  lines.header.stamp = h.stamp;
+  lines.header.frame_id = frame;
+  lines.ns = "lines";
+  lines.type = visualization_msgs::Marker::POINTS;
+  lines.scale.x = lines.scale.y = 0.05;
+  lines.color.r = lines.color.g = lines.color.b = lines.color.a = 1.0f;
+  lines.pose.orientation.w = 1.0;
+  int id = 0;
+  for (const Detection& d : dets) {
+    geometry_msgs::Point p;
+    p.x = d.x;
+    p.y = d.y;
+    if (d.membership_class == "Line") {
+      lines.points.push_back(p);
+      continue;
+    }
+    visualization_msgs::Marker m;
+    m.header = lines.header;
+    m.ns = d.membership_class;
+    m.id = id++;
+    m.type = d.membership_class == "Ball" ? visualization_msgs::Marker::SPHERE : visualization_msgs::Marker::CYLINDER;
+    const double size = d.membership_class == "Ball" ? 0.22 : d.membership_class == "Robot" ? 0.5 : 0.15;
+    m.scale.x = m.scale.y = size;
+    m.scale.z = d.membership_class == "Ball" ? 0.22 : 0.4;
+    m.pose.position = p;
+    m.pose.position.z = 0.5 * m.scale.z;
+    m.pose.orientation.w = 1.0;
+    const cv::Scalar c = color_rgb(d.color);
+    m.color.r = float(c[0] / 255.0);
+    m.color.g = float(c[1] / 255.0);
+    m.color.b = float(c[2] / 255.0);
+    m.color.a = 0.8f;
+    arr.markers.push_back(m);
+  }
+  arr.markers.push_back(lines);
+  return arr;
+}
+
+class RecVisionNode {
+ public:
+  RecVisionNode(ros::NodeHandle nh, ros::NodeHandle pnh) : it_(nh), tf_listener_(tf_buffer_), updater_(nh, pnh) {
+    std::string calib_file;
+    mrt::ros_common::ParamReader params(pnh);
+    params.require("calib_file", calib_file, "the calibration file (camera, colours, detector)");
+    std::string prefix = ros::this_node::getNamespace();
+    while (!prefix.empty() && prefix[0] == '/') prefix.erase(0, 1);
+    robot_ = prefix;
+    if (!prefix.empty()) prefix += "/";
+    params.get("frame_prefix", prefix).get("robot", robot_).get("use_tf", use_tf_).get("debug_image", debug_);
+    base_frame_ = prefix + "base_link";
+    params.get("base_frame", base_frame_);
+    detector_ = std::make_unique<Detector>(load_calibration(calib_file));  // ParseError -> run_node exits 1
+    percepts_pub_ = nh.advertise<mrt_msgs::Percept>("percepts", 10);
+    if (debug_) debug_pub_ = it_.advertise("camera/debug_image", 1);
+    markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("vision_markers", 2);
+    image_sub_ = it_.subscribe("camera/image_raw", 2, &RecVisionNode::on_image, this);
+    updater_.setHardwareID("recvision");
+    updater_.add("frames", this, &RecVisionNode::diagnose);
+    diag_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { updater_.update(); });
+  }
+
+ private:
+  void on_image(const sensor_msgs::ImageConstPtr& msg) {
+    Frame f;
+    std::string why;
+    if (!frame_from_raw(msg->encoding, int(msg->width), int(msg->height), msg->step, msg->data.data(),
+                        msg->data.size(), msg->header.stamp.toSec(), f, why)) {
+      ++dropped_encoding_;
+      ROS_WARN_THROTTLE(5.0, "recvision: frame dropped: %s", why.c_str());
+      return;
+    }
+    if (!detector_->accepts(f, why)) {
+      ++dropped_size_;
+      ROS_WARN_THROTTLE(5.0, "recvision: frame dropped: %s", why.c_str());
+      return;
+    }
+    update_mount(msg->header.frame_id);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto dets = detector_->process(f);
+    last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ++frames_;
+    percepts_pub_.publish(to_percept(dets, msg->header, base_frame_, robot_));
+    if (debug_ && debug_pub_.getNumSubscribers() > 0) publish_debug(f, dets, msg->header);
+    if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(to_markers(dets, msg->header, base_frame_));
+    updater_.update();
+  }
+
+  // The mount is static: looked up until found once.
+  void update_mount(const std::string& image_frame) {
+    if (!use_tf_ || mount_from_tf_ || image_frame.empty()) return;
+    try {
+      const auto t = tf_buffer_.lookupTransform(base_frame_, image_frame, ros::Time(0));
+      detector_->set_mount(t.transform.translation.x, t.transform.translation.y, mrt::ros_common::quaternion_to_yaw(t.transform.rotation));
+      mount_from_tf_ = true;
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "recvision: no tf %s <- %s yet (%s); using the calibration's mount", base_frame_.c_str(),
+                        image_frame.c_str(), e.what());
+    }
+  }
+
+  void publish_debug(const Frame& f, const std::vector<Detection>& dets, const std_msgs::Header& h) {
+    cv::Mat out;
+    detector_->draw(f, dets, out);
+    sensor_msgs::Image img;
+    img.header = h;
+    img.encoding = "rgb8";
+    img.width = out.cols;
+    img.height = out.rows;
+    img.step = out.cols * 3;
+    img.data.assign(out.data, out.data + out.total() * 3);
+    debug_pub_.publish(img);
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
+    if (dropped_encoding_ + dropped_size_ > 0)
+      s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "frames dropped (wrong size or encoding)");
+    else if (frames_ == 0)
+      s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no frame yet");
+    else
+      s.summary(diagnostic_msgs::DiagnosticStatus::OK, "processing");
+    s.add("frames processed", frames_);
+    s.add("dropped: wrong encoding", dropped_encoding_);
+    s.add("dropped: wrong size", dropped_size_);
+    s.add("last processing time (ms)", last_ms_);
+    s.add("mount from tf", mount_from_tf_);
+  }
+
+  image_transport::ImageTransport it_;
+  image_transport::Subscriber image_sub_;
+  image_transport::Publisher debug_pub_;
+  ros::Publisher percepts_pub_, markers_pub_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  diagnostic_updater::Updater updater_;
+  ros::WallTimer diag_timer_;
+  std::unique_ptr<Detector> detector_;
+  std::string base_frame_, robot_;
+  bool use_tf_ = true, debug_ = true, mount_from_tf_ = false;
+  long frames_ = 0, dropped_encoding_ = 0, dropped_size_ = 0;
+  double last_ms_ = 0;
+};
+
+}  // namespace
+}  // namespace mrt::recvision
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "recvision_node");
+  return mrt::ros_common::run_node([] {
+    mrt::recvision::RecVisionNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+    ros::spin();
+    return 0;
+  });
+}

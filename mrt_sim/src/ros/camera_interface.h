@@ -1,0 +1,57 @@
+// The rendered omnidirectional camera of one simulated robot on ROS:
+// camera/image_raw (rgb8, image_transport) and camera/camera_info in
+// /<robot>/, frame <robot>/omni_mirror (the mirror's viewpoint).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <diagnostic_updater/DiagnosticStatusWrapper.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <image_transport/image_transport.h>
+#include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+
+#include "mrt_sim/camera.h"
+#include "mrt_sim/simulator.h"
+
+namespace mrt::sim::node {
+
+/// camera_info of an omnidirectional camera: width, height, K with the
+/// mirror centre (fx = fy = 1), distortion_model "omni_mirror", D empty
+/// (the mirror profile is in the world file / calibration file).
+sensor_msgs::CameraInfo to_camera_info(const mrt::common::OmniCamera& c, const std::string& frame,
+                                       const ros::Time& stamp);
+
+class CameraInterface {
+ public:
+  /// `rnh` is the robot's namespace; `frame_prefix` "<prefix><robot>/".
+  CameraInterface(ros::NodeHandle& rnh, const Simulator& sim, std::size_t index, const std::string& frame_prefix);
+
+  /// After a step: renders and publishes a frame when one is due and
+  /// someone listens.
+  void publish(const ros::Time& stamp);
+
+  /// <sensor_parent> -> <robot>/omni_mirror at the viewpoint mount.
+  geometry_msgs::TransformStamped mount_transform(const std::string& parent) const;
+
+  const std::string& frame() const { return frame_; }
+  std::uint64_t frames() const { return frames_; }
+  double render_ms() const { return render_ms_; }
+
+ private:
+  const Simulator& sim_;
+  std::size_t index_;
+  std::string frame_;
+  mrt::sim::CameraRenderer renderer_;
+  image_transport::ImageTransport it_;
+  image_transport::Publisher image_pub_;
+  ros::Publisher info_pub_;
+  cv::Mat image_;
+  std::uint64_t frames_ = 0;
+  double render_ms_ = 0.0;  // exponential average of the render time
+};
+
+}  // namespace mrt::sim::node
