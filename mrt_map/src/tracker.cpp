@@ -1,0 +1,221 @@
+#include "mrt_map/tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "mrt_map/assignment.h"
+#include "mrt_map/kalman.h"
+
+namespace mrt::map {
+
+namespace {
+// Adopts a more specific class (a Robot seen as an Opponent).
+void refine_class(const ConceptualModel& m, Anchor& a, int c, double degree) {
+  if (c == a.class_index) {
+    a.degree = degree;
+  } else if (m.is_a(c, a.class_index)) {
+    a.class_index = c;
+    a.degree = degree;
+  }
+}
+
+double position_sigma_max(const Mat4& P) {
+  Eigen::SelfAdjointEigenSolver<Mat2> es(P.topLeftCorner<2, 2>());
+  return std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff()));
+}
+}  // namespace
+
+Anchor& Tracker::create(double now, int class_index, double degree) {
+  Anchor a;
+  a.id = next_id_++;
+  a.class_index = class_index;
+  a.degree = degree;
+  a.first_seen = a.last_seen = now;
+  anchors_.push_back(std::move(a));
+  return anchors_.back();
+}
+
+void Tracker::cycle(double now, const std::vector<Observation>& observations,
+                    const std::vector<RemoteTrack>& remote) {
+  for (Anchor& a : anchors_) {
+    const ClassDef& c = model_.at(a.class_index);
+    a.fused = predict(a.fused, c, now);
+    if (a.has_local) a.local = predict(a.local, c, now);
+    a.remote.clear();
+  }
+  seen_.clear();
+  associate_local(now, observations);
+  associate_remote(now, remote);
+  fuse(now);
+  refine_teammates(now);
+  life_cycle(now);
+}
+
+void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
+  const double gate = model_.tracker().gate;
+  std::vector<std::vector<double>> cost(obs.size(), std::vector<double>(anchors_.size(), kInfeasible));
+  for (std::size_t r = 0; r < obs.size(); ++r)
+    for (std::size_t c = 0; c < anchors_.size(); ++c) {
+      if (!model_.compatible(obs[r].class_index, anchors_[c].class_index)) continue;
+      const double d = mahalanobis2(anchors_[c].fused, obs[r].z, obs[r].R);
+      if (d <= gate) cost[r][c] = d;
+    }
+  const std::vector<int> match = assign(cost, gate);
+  const std::size_t existing = anchors_.size();
+  for (std::size_t r = 0; r < obs.size(); ++r) {
+    const Observation& o = obs[r];
+    Anchor* a = nullptr;
+    if (match[r] >= 0 && static_cast<std::size_t>(match[r]) < existing) {
+      a = &anchors_[static_cast<std::size_t>(match[r])];
+      refine_class(model_, *a, o.class_index, o.degree);
+    } else {
+      a = &create(now, o.class_index, o.degree);
+    }
+    const ClassDef& c = model_.at(a->class_index);
+    if (!a->has_local) {
+      a->local = initialize(o, c);
+      a->local = predict(a->local, c, now);
+      a->has_local = true;
+      a->local_hits = 0;
+      if (a->hits == 0) a->fused = a->local;
+    } else {
+      update(a->local, o.z, o.R);
+    }
+    ++a->local_hits;
+    a->local_last_seen = a->last_seen = now;
+    a->sources.insert(o.sensors.begin(), o.sensors.end());
+    seen_.insert(a->id);
+  }
+}
+
+void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remote) {
+  const double gate = model_.team().gate;
+  const double fresh = model_.tracker().coast_after;
+  std::map<std::string, std::vector<const RemoteTrack*>> by_robot;
+  for (const RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
+  for (const auto& [robot, tracks] : by_robot) {
+    const std::size_t existing = anchors_.size();
+    std::vector<std::vector<double>> cost(tracks.size(), std::vector<double>(existing, kInfeasible));
+    for (std::size_t r = 0; r < tracks.size(); ++r)
+      for (std::size_t c = 0; c < existing; ++c) {
+        const Anchor& a = anchors_[c];
+        if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
+        const double d = mahalanobis2(a.fused, tracks[r]->estimate.x.head<2>(),
+                                      tracks[r]->estimate.P.topLeftCorner<2, 2>());
+        if (d > gate) continue;
+        const auto link = a.remote_ids.find(robot);
+        const bool sticky = link != a.remote_ids.end() && link->second == tracks[r]->id;
+        cost[r][c] = sticky ? 0.0 : d;  // keep last cycle's link while it gates
+      }
+    const std::vector<int> match = assign(cost, gate);
+    for (std::size_t r = 0; r < tracks.size(); ++r) {
+      const RemoteTrack& t = *tracks[r];
+      const bool is_fresh = t.last_seen >= now - fresh;
+      Anchor* a = nullptr;
+      if (match[r] >= 0) {
+        a = &anchors_[static_cast<std::size_t>(match[r])];
+        refine_class(model_, *a, t.class_index, t.degree);
+      } else if (is_fresh) {
+        a = &create(now, t.class_index, t.degree);
+        a->fused = t.estimate;
+      } else {
+        continue;
+      }
+      a->remote[robot] = t;
+      a->remote_ids[robot] = t.id;
+      if (is_fresh) {
+        a->last_seen = std::max(a->last_seen, t.last_seen);
+        a->sources.insert(t.sensors.begin(), t.sensors.end());
+        seen_.insert(a->id);
+      }
+    }
+  }
+}
+
+void Tracker::fuse(double now) {
+  const bool ci = model_.team().covariance_intersection;
+  for (Anchor& a : anchors_) {
+    std::vector<const Estimate*> parts;
+    if (a.has_local) parts.push_back(&a.local);
+    for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
+    if (parts.empty()) continue;
+    Estimate f = *parts[0];
+    for (std::size_t i = 1; i < parts.size(); ++i)
+      f = ci ? covariance_intersection(f, *parts[i]) : fuse_estimates(f, *parts[i]);
+    f.stamp = now;
+    a.fused = f;
+  }
+}
+
+void Tracker::life_cycle(double now) {
+  const TrackerOptions& o = model_.tracker();
+  for (Anchor& a : anchors_) {
+    if (seen_.count(a.id)) {
+      ++a.hits;
+      if ((a.status == AnchorStatus::kTentative && a.hits >= o.confirm_hits) || a.status == AnchorStatus::kCoasting)
+        a.status = AnchorStatus::kConfirmed;
+    } else {
+      const double age = now - a.last_seen;
+      if (a.status == AnchorStatus::kTentative && age > o.tentative_timeout) a.status = AnchorStatus::kDropped;
+      else if (a.status == AnchorStatus::kConfirmed && age > o.coast_after) a.status = AnchorStatus::kCoasting;
+      if (a.status == AnchorStatus::kCoasting && age > o.drop_after) a.status = AnchorStatus::kDropped;
+      if (position_sigma_max(a.fused.P) > o.max_sigma) a.status = AnchorStatus::kDropped;
+    }
+    if (a.has_local && now - a.local_last_seen > o.drop_after) {
+      a.has_local = false;
+      a.local_hits = 0;
+    }
+  }
+  const auto before = anchors_.size();
+  anchors_.erase(std::remove_if(anchors_.begin(), anchors_.end(),
+                                [](const Anchor& a) { return a.status == AnchorStatus::kDropped; }),
+                 anchors_.end());
+  dropped_ += before - anchors_.size();
+}
+
+void Tracker::set_teammate_pose(const std::string& robot, const Vec2& p, const Mat2& cov, double stamp) {
+  teammates_[robot] = {p, cov, stamp};
+}
+
+void Tracker::refine_teammates(double now) {
+  if (teammates_.empty()) return;
+  for (Anchor& a : anchors_) {
+    int target = -1;
+    for (int c = 0; c < model_.size(); ++c)
+      if (model_.at(c).refined_by_teammate_pose && c != a.class_index && model_.is_a(c, a.class_index)) target = c;
+    if (target < 0) continue;
+    for (const auto& [robot, t] : teammates_) {
+      if (now - t.stamp > model_.team().max_latency) continue;
+      if (mahalanobis2(a.fused, t.p, t.cov) <= model_.team().gate) {
+        a.class_index = target;
+        a.sources.insert(robot + "/pose");
+        break;
+      }
+    }
+  }
+}
+
+double Tracker::reliability(const Anchor& a, double now) const {
+  return a.degree * std::exp(-std::max(0.0, now - a.last_seen) / model_.tracker().reliability_tau);
+}
+
+std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
+  std::vector<RemoteTrack> out;
+  for (const Anchor& a : anchors_) {
+    if (!a.has_local || a.local_hits < model_.tracker().confirm_hits) continue;
+    RemoteTrack t;
+    t.robot = robot;
+    t.id = a.id;
+    t.class_index = a.class_index;
+    t.degree = a.degree;
+    t.estimate = a.local;
+    t.last_seen = a.local_last_seen;
+    for (const std::string& s : a.sources)
+      if (s.rfind(robot + "/", 0) == 0) t.sensors.insert(s);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace mrt::map
