@@ -77,6 +77,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   std::vector<long> last_id(sim.opponents().size(), -1);
   long switches = 0;
   double next_team = 0.0;
+  double robot_anchors = 0.0, ball_anchors = 0.0, alone_robot_anchors = 0.0;
   const long steps = static_cast<long>(minutes * 60.0 / kDt);
   for (long k = 0; k < steps; ++k) {
     const double t = k * kDt;
@@ -105,6 +106,13 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
         network.push_back({t + kTeamLatency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
     }
     if (t >= next_team) next_team += kTeamPeriod;
+    for (const Anchor& a : team[0]->tracker().anchors())
+      if (a.status == AnchorStatus::kConfirmed) {
+        robot_anchors += model.is_a(a.class_index, opp_class);
+        ball_anchors += model.is_a(a.class_index, ball_class);
+      }
+    for (const Anchor& a : alone[0]->tracker().anchors())
+      if (a.status == AnchorStatus::kConfirmed) alone_robot_anchors += model.is_a(a.class_index, opp_class);
     for (std::size_t o = 0; o < sim.opponents().size(); ++o) {
       const Anchor* best = nullptr;
       double best_d = 0.5;
@@ -136,6 +144,10 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   const double per10 = static_cast<double>(switches) / static_cast<double>(sim.opponents().size()) /
                        (minutes / 10.0);
   std::printf("map_opponent_id_switches: %ld count\n", switches);
+  std::printf("map_confirmed_robot_anchors_team_mean: %.2f count (truth: %zu)\n", robot_anchors / steps,
+              sim.mates().size() - 1 + sim.opponents().size());
+  std::printf("map_confirmed_robot_anchors_single_mean: %.2f count\n", alone_robot_anchors / steps);
+  std::printf("map_confirmed_ball_anchors_team_mean: %.2f count (truth: 1)\n", ball_anchors / steps);
   std::printf("map_opponent_id_switches_per_opponent_per_10min: %.2f count\n", per10);
 }
 

@@ -155,7 +155,8 @@ class ModelLoader {
   void tracker(const YAML::Node& n) {
     TrackerOptions& t = m_.tracker_;
     r_.map(n, "tracker", {"gate", "merge_gate", "confirm_hits", "tentative_timeout", "coast_after", "drop_after",
-                          "max_sigma", "reliability_tau"});
+                          "max_sigma", "reliability_tau", "coalesce_gate",
+                          "coalesce_after"});
     t.gate = r_.positive(n, "gate", t.gate);
     t.merge_gate = r_.positive(n, "merge_gate", t.merge_gate);
     if (n["confirm_hits"]) t.confirm_hits = static_cast<int>(r_.integer(n["confirm_hits"], "confirm_hits", 1, 1000));
@@ -165,10 +166,13 @@ class ModelLoader {
     if (t.drop_after < t.coast_after) r_.fail(n["drop_after"] ? n["drop_after"] : n, "expected 'drop_after' >= 'coast_after'");
     t.max_sigma = r_.positive(n, "max_sigma", t.max_sigma);
     t.reliability_tau = r_.positive(n, "reliability_tau", t.reliability_tau);
+    t.coalesce_gate = r_.non_negative(n, "coalesce_gate", t.coalesce_gate);
+    t.coalesce_after = r_.non_negative(n, "coalesce_after", t.coalesce_after);
   }
 
   void team(const YAML::Node& n) {
-    r_.map(n, "team", {"max_latency", "gate", "fusion"});
+    r_.map(n, "team", {"max_latency", "gate", "fusion", "extra_sigma"});
+    m_.team_.extra_sigma = r_.non_negative(n, "extra_sigma", m_.team_.extra_sigma);
     m_.team_.max_latency = r_.positive(n, "max_latency", m_.team_.max_latency);
     m_.team_.gate = r_.positive(n, "gate", m_.team_.gate);
     if (const YAML::Node f = n["fusion"]) {

@@ -46,6 +46,9 @@ bool Merger::compensate(RemoteTrack& t, double now) const {
   if (!(std::fabs(age) <= model_.team().max_latency)) return false;
   if (!t.estimate.x.allFinite() || !t.estimate.P.allFinite() || t.class_index < 0) return false;
   t.estimate = predict(t.estimate, model_.at(t.class_index), now);
+  const double e = model_.team().extra_sigma;
+  t.estimate.P(0, 0) += e * e;
+  t.estimate.P(1, 1) += e * e;
   return true;
 }
 

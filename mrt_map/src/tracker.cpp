@@ -38,6 +38,7 @@ Anchor& Tracker::create(double now, int class_index, double degree) {
 
 void Tracker::cycle(double now, const std::vector<Observation>& observations,
                     const std::vector<RemoteTrack>& remote) {
+  now_ = now;
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
     a.fused = predict(a.fused, c, now);
@@ -45,11 +46,62 @@ void Tracker::cycle(double now, const std::vector<Observation>& observations,
     a.remote.clear();
   }
   seen_.clear();
+  coalesced_cycle_ = 0;
   associate_local(now, observations);
   associate_remote(now, remote);
   fuse(now);
+  coalesce();
   refine_teammates(now);
   life_cycle(now);
+}
+
+void Tracker::coalesce() {
+  // Two anchors of compatible classes whose states (position and velocity)
+  // stay within the coalescence gate for coalesce_after seconds are one
+  // object (objects crossing are close only briefly): the older (lower id)
+  // keeps its symbol and takes the other's support.
+  const double gate = model_.tracker().coalesce_gate;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> still_close;
+  if (!(gate > 0.0)) return;
+  for (std::size_t i = 0; i < anchors_.size(); ++i) {
+    for (std::size_t j = i + 1; j < anchors_.size(); ++j) {
+      Anchor& a = anchors_[i];
+      Anchor& b = anchors_[j];
+      if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
+      if (!model_.compatible(a.class_index, b.class_index)) continue;
+      const Vec4 y = a.fused.x - b.fused.x;
+      if (y.head<2>().squaredNorm() > 4.0) continue;  // cheap reject: 2 m apart
+      const Mat4 S = a.fused.P + b.fused.P;
+      if (y.dot(S.ldlt().solve(y)) > gate) continue;
+      const auto key = std::make_pair(std::min(a.id, b.id), std::max(a.id, b.id));
+      const auto since = close_since_.find(key);
+      const double t0 = since == close_since_.end() ? now_ : since->second;
+      if (now_ - t0 < model_.tracker().coalesce_after) {
+        still_close[key] = t0;
+        continue;
+      }
+      Anchor& keep = a.id < b.id ? a : b;
+      Anchor& gone = a.id < b.id ? b : a;
+      if (gone.has_local && (!keep.has_local || gone.local_last_seen > keep.local_last_seen)) {
+        keep.local = gone.local;
+        keep.has_local = true;
+        keep.local_hits = std::max(keep.local_hits, gone.local_hits);
+        keep.local_last_seen = gone.local_last_seen;
+      }
+      if (model_.is_a(gone.class_index, keep.class_index)) keep.class_index = gone.class_index;
+      keep.hits = std::max(keep.hits, gone.hits);
+      keep.last_seen = std::max(keep.last_seen, gone.last_seen);
+      keep.sources.insert(gone.sources.begin(), gone.sources.end());
+      for (const auto& [robot, id] : gone.remote_ids) keep.remote_ids.emplace(robot, id);
+      if (gone.status == AnchorStatus::kConfirmed) keep.status = AnchorStatus::kConfirmed;
+      else if (keep.status == AnchorStatus::kTentative) keep.status = gone.status;
+      if (seen_.count(gone.id)) seen_.insert(keep.id);
+      gone.status = AnchorStatus::kDropped;
+      ++coalesced_;
+      ++coalesced_cycle_;
+    }
+  }
+  close_since_ = std::move(still_close);
 }
 
 void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
@@ -171,7 +223,7 @@ void Tracker::life_cycle(double now) {
   anchors_.erase(std::remove_if(anchors_.begin(), anchors_.end(),
                                 [](const Anchor& a) { return a.status == AnchorStatus::kDropped; }),
                  anchors_.end());
-  dropped_ += before - anchors_.size();
+  dropped_ += before - anchors_.size() - coalesced_cycle_;
 }
 
 void Tracker::set_teammate_pose(const std::string& robot, const Vec2& p, const Mat2& cov, double stamp) {
@@ -204,6 +256,7 @@ std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
   std::vector<RemoteTrack> out;
   for (const Anchor& a : anchors_) {
     if (!a.has_local || a.local_hits < model_.tracker().confirm_hits) continue;
+    if (a.status == AnchorStatus::kDropped || now_ - a.local_last_seen > model_.tracker().coast_after) continue;
     RemoteTrack t;
     t.robot = robot;
     t.id = a.id;

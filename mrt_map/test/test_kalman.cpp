@@ -100,7 +100,7 @@ TEST(Merger, JoinsTwoSensorsOfOneObjectOnly) {
 
 TEST(Merger, LatencyCompensation) {
   ConceptualModel m = ConceptualModel::parse(
-      "classes:\n  Ball: {motion: constant_velocity, accel_noise: 0}\nteam: {max_latency: 1.0}\n", "t.yaml");
+      "classes:\n  Ball: {motion: constant_velocity, accel_noise: 0}\nteam: {max_latency: 1.0, extra_sigma: 0}\n", "t.yaml");
   const Merger merger(m);
   RemoteTrack t;
   t.class_index = 0;
@@ -112,6 +112,12 @@ TEST(Merger, LatencyCompensation) {
   EXPECT_NEAR(t.estimate.x(0), 2.0, 1e-12);
   EXPECT_NEAR(t.estimate.P(0, 0), 1.25, 1e-12);
   EXPECT_FALSE(merger.compensate(late, 11.6));  // 1.6 s > max_latency
+  // With team.extra_sigma = 0.1: P(0,0) = 1.25 + 0.01.
+  ConceptualModel m2 = ConceptualModel::parse(
+      "classes:\n  Ball: {motion: constant_velocity, accel_noise: 0}\nteam: {extra_sigma: 0.1}\n", "t.yaml");
+  ASSERT_TRUE(Merger(m2).compensate(late, 10.5));
+  EXPECT_NEAR(late.estimate.P(0, 0), 1.26, 1e-12);
+  EXPECT_NEAR(late.estimate.P(2, 2), 1.0, 1e-12);
 }
 
 TEST(Assignment, GlobalBeatsGreedy) {

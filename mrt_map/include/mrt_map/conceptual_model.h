@@ -54,11 +54,14 @@ struct TrackerOptions {
   double drop_after = 3.0;       // s unseen before coasting -> dropped
   double max_sigma = 3.0;        // m, dropped when the position sigma grows beyond
   double reliability_tau = 1.0;  // s, reliability decay after last seen
+  double coalesce_gate = 9.49;   // chi-square 4 dof, 95 %: two anchors this close in state ...
+  double coalesce_after = 0.5;   // s ... for this long are one object (not a crossing): joined
 };
 
 struct TeamOptions {
   double max_latency = 1.0;  // s, older teammate models are stale
   double gate = 13.82;       // chi-square 2 dof, 99.9 %
+  double extra_sigma = 0.05; // m, added to a teammate's position sigma (its localisation bias)
   bool covariance_intersection = true;  // false: independent (Kalman) fusion
 };
 

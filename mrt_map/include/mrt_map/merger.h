@@ -24,7 +24,9 @@ class Merger {
   std::vector<Observation> merge(const std::vector<Observation>& observations) const;
 
   /// A teammate's anchor predicted from its stamp to `now` with its class's
-  /// motion model; false when it is older than team.max_latency, from the
+  /// motion model, its position variances increased by team.extra_sigma^2
+  /// (the teammate's own localisation error, which its covariance does not
+  /// hold in our frame); false when it is older than team.max_latency, from the
   /// future by more than that, or not finite.
   bool compensate(RemoteTrack& track, double now) const;
 

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mrt_map/conceptual_model.h"
@@ -35,15 +36,19 @@ class Tracker {
   const std::vector<Anchor>& anchors() const { return anchors_; }
   /// reliability = degree * exp(-(now - last_seen) / tau).
   double reliability(const Anchor& a, double now) const;
-  /// Anchors the robot's own sensors confirm, for the teammates: their
-  /// local estimates only (so a teammate never gets its own data back).
+  /// Anchors the robot's own sensors confirm (confirm_hits own sightings,
+  /// the last within coast_after), for the teammates: their local
+  /// estimates only (so a teammate never gets its own data back).
   std::vector<RemoteTrack> local_tracks(const std::string& robot) const;
   std::uint64_t dropped_count() const { return dropped_; }
+  /// Anchors joined into an older one (two symbols for one object).
+  std::uint64_t coalesced_count() const { return coalesced_; }
 
  private:
   void associate_local(double now, const std::vector<Observation>& obs);
   void associate_remote(double now, const std::vector<RemoteTrack>& remote);
   void fuse(double now);
+  void coalesce();
   void life_cycle(double now);
   void refine_teammates(double now);
   Anchor& create(double now, int class_index, double degree);
@@ -52,7 +57,9 @@ class Tracker {
   Merger merger_;
   std::vector<Anchor> anchors_;
   std::uint32_t next_id_ = 1;
-  std::uint64_t dropped_ = 0;
+  std::uint64_t dropped_ = 0, coalesced_ = 0, coalesced_cycle_ = 0;
+  double now_ = 0.0;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> close_since_;  // coalescence candidates
   struct TeammatePose {
     Vec2 p;
     Mat2 cov;
