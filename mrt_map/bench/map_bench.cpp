@@ -2,7 +2,7 @@
 // ball and 5 opponents moving, a camera model per robot), against the
 // simulation's ground truth; then the full-cycle time of 50 objects x 5
 // robots. Prints `name: value unit` lines (scripts/bench.sh).
-//   map_bench [minutes=10] [seed=1]
+//   map_bench [minutes=10] [seed=1] [model=config/robocup.yaml]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,7 +70,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
     team.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
     alone.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
   }
-  const int ball_class = model.find("Ball"), opp_class = model.find("Robot");
+  const int ball_class = model.find("Ball"), opp_class = model.find("Opponent");
   std::vector<Stats> team_stats(n), alone_stats(n);
   std::deque<Message> network;
   // Identity switches: for each opponent, the id of robot 0's team anchor on it.
@@ -205,7 +205,7 @@ void cycle_time(const ConceptualModel& model) {
 int main(int argc, char** argv) {
   const double minutes = argc > 1 ? std::atof(argv[1]) : 10.0;
   const unsigned seed = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1u;
-  const ConceptualModel model = ConceptualModel::load(MRT_MAP_CONFIG_DIR "/robocup.yaml");
+  const ConceptualModel model = ConceptualModel::load(argc > 3 ? argv[3] : MRT_MAP_CONFIG_DIR "/robocup.yaml");
   cycle_time(model);
   team_run(model, minutes > 0 ? minutes : 10.0, seed);
   return 0;

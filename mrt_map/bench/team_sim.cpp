@@ -35,7 +35,11 @@ Vec2 TeamSim::random_point() {
 void TeamSim::move(Body& b, double dt) {
   const Vec2 d = b.goal - b.p;
   if (d.norm() < 0.2) b.goal = random_point();
-  b.v = (b.goal - b.p).normalized() * b.speed;
+  // Bounded acceleration (3 m/s^2, an MSL robot's order of magnitude).
+  const Vec2 want = (b.goal - b.p).normalized() * b.speed;
+  const Vec2 dv = want - b.v;
+  const double max_dv = 3.0 * dt;
+  b.v += dv.norm() > max_dv ? Vec2(dv.normalized() * max_dv) : dv;
   b.p += b.v * dt;
 }
 

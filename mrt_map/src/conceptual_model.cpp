@@ -156,7 +156,7 @@ class ModelLoader {
     TrackerOptions& t = m_.tracker_;
     r_.map(n, "tracker", {"gate", "merge_gate", "confirm_hits", "tentative_timeout", "coast_after", "drop_after",
                           "max_sigma", "reliability_tau", "coalesce_gate",
-                          "coalesce_after"});
+                          "coalesce_after", "maneuver_radius"});
     t.gate = r_.positive(n, "gate", t.gate);
     t.merge_gate = r_.positive(n, "merge_gate", t.merge_gate);
     if (n["confirm_hits"]) t.confirm_hits = static_cast<int>(r_.integer(n["confirm_hits"], "confirm_hits", 1, 1000));
@@ -168,6 +168,7 @@ class ModelLoader {
     t.reliability_tau = r_.positive(n, "reliability_tau", t.reliability_tau);
     t.coalesce_gate = r_.non_negative(n, "coalesce_gate", t.coalesce_gate);
     t.coalesce_after = r_.non_negative(n, "coalesce_after", t.coalesce_after);
+    t.maneuver_radius = r_.non_negative(n, "maneuver_radius", t.maneuver_radius);
   }
 
   void team(const YAML::Node& n) {

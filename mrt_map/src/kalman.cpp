@@ -74,24 +74,15 @@ void fuse_independent(Vec2& z, Mat2& R, const Vec2& z2, const Mat2& R2) {
   R = P;
 }
 
-namespace {
-Estimate ci_at(const Estimate& a, const Mat4& Ia, const Estimate& b, const Mat4& Ib, double w) {
-  Estimate e;
-  e.P = (w * Ia + (1.0 - w) * Ib).inverse();
-  e.x = e.P * (w * Ia * a.x + (1.0 - w) * Ib * b.x);
-  e.stamp = a.stamp;
-  return e;
-}
-}  // namespace
-
 Estimate covariance_intersection(const Estimate& a, const Estimate& b, double* omega) {
-  const Mat4 Ia = a.P.inverse(), Ib = b.P.inverse();
-  auto cost = [&](double w) { return ci_at(a, Ia, b, Ib, w).P.topLeftCorner<2, 2>().trace(); };
+  // w from the position blocks alone (2x2, cheap): trace((w A^-1 + (1-w) B^-1)^-1).
+  const Mat2 Ia2 = a.P.topLeftCorner<2, 2>().inverse(), Ib2 = b.P.topLeftCorner<2, 2>().inverse();
+  auto cost = [&](double w) { return (w * Ia2 + (1.0 - w) * Ib2).inverse().trace(); };
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
   double lo = 0.0, hi = 1.0;
   double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
   double f1 = cost(x1), f2 = cost(x2);
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < 30; ++i) {
     if (f1 < f2) {
       hi = x2;
       x2 = x1;
@@ -111,7 +102,12 @@ Estimate covariance_intersection(const Estimate& a, const Estimate& b, double* o
   if (cost(0.0) <= cost(w)) w = 0.0;
   if (cost(1.0) < cost(w)) w = 1.0;
   if (omega) *omega = w;
-  return ci_at(a, Ia, b, Ib, w);
+  const Mat4 Ia = a.P.inverse(), Ib = b.P.inverse();
+  Estimate e;
+  e.P = (w * Ia + (1.0 - w) * Ib).inverse();
+  e.x = e.P * (w * Ia * a.x + (1.0 - w) * Ib * b.x);
+  e.stamp = a.stamp;
+  return e;
 }
 
 Estimate fuse_estimates(const Estimate& a, const Estimate& b) {

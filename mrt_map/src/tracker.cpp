@@ -106,12 +106,18 @@ void Tracker::coalesce() {
 
 void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
   const double gate = model_.tracker().gate;
+  const double radius = model_.tracker().maneuver_radius;
   std::vector<std::vector<double>> cost(obs.size(), std::vector<double>(anchors_.size(), kInfeasible));
   for (std::size_t r = 0; r < obs.size(); ++r)
     for (std::size_t c = 0; c < anchors_.size(); ++c) {
       if (!model_.compatible(obs[r].class_index, anchors_[c].class_index)) continue;
       const double d = mahalanobis2(anchors_[c].fused, obs[r].z, obs[r].R);
+      // Within the gate; or a confirmed anchor's manoeuvre (a kick), at the
+      // worst cost so that any gated pair wins.
       if (d <= gate) cost[r][c] = d;
+      else if (anchors_[c].status != AnchorStatus::kTentative &&
+               (obs[r].z - anchors_[c].fused.x.head<2>()).norm() <= radius)
+        cost[r][c] = gate;
     }
   const std::vector<int> match = assign(cost, gate);
   const std::size_t existing = anchors_.size();
@@ -132,6 +138,13 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
       a->local_hits = 0;
       if (a->hits == 0) a->fused = a->local;
     } else {
+      if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
+        // Manoeuvre: forget the velocity, keep the symbol.
+        a->local.P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
+        a->local.P.block<2, 2>(0, 2).setZero();
+        a->local.P.block<2, 2>(2, 0).setZero();
+        a->local.P.topLeftCorner<2, 2>() += o.R;
+      }
       update(a->local, o.z, o.R);
     }
     ++a->local_hits;
@@ -143,6 +156,7 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
 
 void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remote) {
   const double gate = model_.team().gate;
+  const double radius = model_.tracker().maneuver_radius;
   const double fresh = model_.tracker().coast_after;
   std::map<std::string, std::vector<const RemoteTrack*>> by_robot;
   for (const RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
@@ -155,10 +169,12 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
         if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
         const double d = mahalanobis2(a.fused, tracks[r]->estimate.x.head<2>(),
                                       tracks[r]->estimate.P.topLeftCorner<2, 2>());
-        if (d > gate) continue;
+        const bool manoeuvre = a.status != AnchorStatus::kTentative &&
+                               (tracks[r]->estimate.x.head<2>() - a.fused.x.head<2>()).norm() <= radius;
+        if (d > gate && !manoeuvre) continue;
         const auto link = a.remote_ids.find(robot);
         const bool sticky = link != a.remote_ids.end() && link->second == tracks[r]->id;
-        cost[r][c] = sticky ? 0.0 : d;  // keep last cycle's link while it gates
+        cost[r][c] = sticky ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
       }
     const std::vector<int> match = assign(cost, gate);
     for (std::size_t r = 0; r < tracks.size(); ++r) {

@@ -55,6 +55,8 @@ struct TrackerOptions {
   double max_sigma = 3.0;        // m, dropped when the position sigma grows beyond
   double reliability_tau = 1.0;  // s, reliability decay after last seen
   double coalesce_gate = 9.49;   // chi-square 4 dof, 95 %: two anchors this close in state ...
+  double maneuver_radius = 0.5;  // m: an observation outside the gate but this close to the
+                                // only anchor near it is a manoeuvre (kick): velocity reset
   double coalesce_after = 0.5;   // s ... for this long are one object (not a crossing): joined
 };
 

@@ -36,8 +36,9 @@ void fuse_independent(Vec2& z, Mat2& R, const Vec2& z2, const Mat2& R2);
 
 /// Covariance intersection of two estimates at the same time:
 /// P^-1 = w Pa^-1 + (1-w) Pb^-1, x = P (w Pa^-1 xa + (1-w) Pb^-1 xb), with w
-/// in [0, 1] minimising the trace of the position block of P (golden
-/// section). `omega` receives w when given.
+/// in [0, 1] minimising the trace of the CI of the two position blocks
+/// (golden section on 2x2 matrices; the same w as on the full P when
+/// position and velocity are uncorrelated). `omega` receives w when given.
 Estimate covariance_intersection(const Estimate& a, const Estimate& b, double* omega = nullptr);
 
 /// Information fusion of two estimates believed independent.
