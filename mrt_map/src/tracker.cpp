@@ -128,6 +128,9 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
       a = &anchors_[static_cast<std::size_t>(match[r])];
       refine_class(model_, *a, o.class_index, o.degree);
     } else {
+      bool gated = false;  // a second detection of an anchored object: no new symbol
+      for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
+      if (gated) continue;
       a = &create(now, o.class_index, o.degree);
     }
     const ClassDef& c = model_.at(a->class_index);
@@ -185,6 +188,10 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
         a = &anchors_[static_cast<std::size_t>(match[r])];
         refine_class(model_, *a, t.class_index, t.degree);
       } else if (is_fresh) {
+        // A track inside another anchor's gate is the teammate's duplicate.
+        bool gated = false;
+        for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
+        if (gated) continue;
         a = &create(now, t.class_index, t.degree);
         a->fused = t.estimate;
       } else {
