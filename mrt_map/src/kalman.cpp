@@ -1,6 +1,7 @@
 #include "mrt_map/kalman.h"
 
 #include <cmath>
+#include <limits>
 
 namespace mrt::map {
 
@@ -52,7 +53,15 @@ Estimate predict(const Estimate& e, const ClassDef& c, double t) {
 double mahalanobis2(const Estimate& e, const Vec2& z, const Mat2& R) {
   const Vec2 y = z - e.x.head<2>();
   const Mat2 S = e.P.topLeftCorner<2, 2>() + R;
-  return y.dot(S.ldlt().solve(y));
+  // Closed-form 2x2 inverse (the association's inner loop).
+  const double det = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
+  if (!(det > 0.0)) return std::numeric_limits<double>::infinity();
+  return (S(1, 1) * y.x() * y.x() - (S(0, 1) + S(1, 0)) * y.x() * y.y() + S(0, 0) * y.y() * y.y()) / det;
+}
+
+bool outside_gate(const Estimate& e, const Vec2& z, const Mat2& R, double gate) {
+  // y'S^-1 y >= |y|^2 / lambda_max(S) >= |y|^2 / trace(S).
+  return (z - e.x.head<2>()).squaredNorm() > gate * (e.P(0, 0) + e.P(1, 1) + R(0, 0) + R(1, 1));
 }
 
 void update(Estimate& e, const Vec2& z, const Mat2& R) {

@@ -14,13 +14,15 @@ std::vector<Observation> Merger::merge(const std::vector<Observation>& observati
     double best_d = gate;
     for (std::size_t k = 0; k < clusters.size(); ++k) {
       const Observation& c = clusters[k];
+      const Vec2 y = o.z - c.z;
+      const Mat2 S = o.R + c.R;
+      if (y.squaredNorm() > gate * S.trace()) continue;  // cheap: surely outside the gate
       if (!model_.compatible(o.class_index, c.class_index)) continue;
+      const double d = y.dot(S.ldlt().solve(y));
+      if (d > best_d) continue;
       bool same_sensor = false;
       for (const auto& s : o.sensors) same_sensor = same_sensor || c.sensors.count(s) > 0;
-      if (same_sensor) continue;  // one sensor sees distinct objects
-      const Vec2 y = o.z - c.z;
-      const double d = y.dot((o.R + c.R).ldlt().solve(y));
-      if (d <= best_d) {
+      if (!same_sensor) {  // one sensor sees distinct objects
         best_d = d;
         best = static_cast<int>(k);
       }

@@ -70,7 +70,9 @@ void Tracker::coalesce() {
       if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
       if (!model_.compatible(a.class_index, b.class_index)) continue;
       const Vec4 y = a.fused.x - b.fused.x;
-      if (y.head<2>().squaredNorm() > 4.0) continue;  // cheap reject: 2 m apart
+      // Cheap sufficient reject: the position part alone exceeds the gate.
+      if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
+        continue;
       const Mat4 S = a.fused.P + b.fused.P;
       if (y.dot(S.ldlt().solve(y)) > gate) continue;
       const auto key = std::make_pair(std::min(a.id, b.id), std::max(a.id, b.id));
@@ -111,6 +113,8 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
   for (std::size_t r = 0; r < obs.size(); ++r)
     for (std::size_t c = 0; c < anchors_.size(); ++c) {
       if (!model_.compatible(obs[r].class_index, anchors_[c].class_index)) continue;
+      const bool far = (obs[r].z - anchors_[c].fused.x.head<2>()).norm() > radius;
+      if (far && outside_gate(anchors_[c].fused, obs[r].z, obs[r].R, gate)) continue;
       const double d = mahalanobis2(anchors_[c].fused, obs[r].z, obs[r].R);
       // Within the gate; or a confirmed anchor's manoeuvre (a kick), at the
       // worst cost so that any gated pair wins.
@@ -170,6 +174,10 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
       for (std::size_t c = 0; c < existing; ++c) {
         const Anchor& a = anchors_[c];
         if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
+        const Vec2 z = tracks[r]->estimate.x.head<2>();
+        if ((z - a.fused.x.head<2>()).norm() > radius &&
+            outside_gate(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>(), gate))
+          continue;
         const double d = mahalanobis2(a.fused, tracks[r]->estimate.x.head<2>(),
                                       tracks[r]->estimate.P.topLeftCorner<2, 2>());
         const bool manoeuvre = a.status != AnchorStatus::kTentative &&

@@ -28,6 +28,10 @@ Estimate predict(const Estimate& e, const ClassDef& c, double t);
 /// estimate's position: y' (H P H' + R)^-1 y.
 double mahalanobis2(const Estimate& e, const Vec2& z, const Mat2& R);
 
+/// A cheap sufficient test that mahalanobis2(e, z, R) > gate (|y|^2 beyond
+/// gate * trace(S)), to skip far pairs.
+bool outside_gate(const Estimate& e, const Vec2& z, const Mat2& R, double gate);
+
 /// Kalman update with a position measurement.
 void update(Estimate& e, const Vec2& z, const Mat2& R);
 
