@@ -75,8 +75,10 @@ void count_anchors(const WorldModel& team, const WorldModel& alone, int ball_cla
     if (a.status == AnchorStatus::kConfirmed) c.alone_robots += alone.model().is_a(a.class_index, opp_class);
 }
 
-// For each opponent, the id of the nearest confirmed Opponent anchor within
-// 0.5 m; a change of that id is an identity switch.
+// Each opponent keeps its anchor while that anchor is confirmed and within
+// 0.5 m of it (as in the CLEAR MOT metrics); otherwise it takes the nearest
+// confirmed Opponent anchor within 0.5 m; taking a different id than the
+// last one is an identity switch.
 long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, std::vector<long>& last_id) {
   long switches = 0;
   for (std::size_t o = 0; o < sim.opponents().size(); ++o) {
@@ -85,6 +87,10 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
     for (const Anchor& a : w.tracker().anchors()) {
       if (a.status != AnchorStatus::kConfirmed || !w.model().is_a(a.class_index, opp_class)) continue;
       const double d = (a.fused.x.head<2>() - sim.opponents()[o].p).norm();
+      if (d < 0.5 && static_cast<long>(a.id) == last_id[o]) {
+        best = &a;
+        break;
+      }
       if (d < best_d) best = &a, best_d = d;
     }
     if (!best) continue;
