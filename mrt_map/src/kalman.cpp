@@ -119,6 +119,16 @@ Estimate covariance_intersection(const Estimate& a, const Estimate& b, double* o
   return e;
 }
 
+Ellipse principal_axes(const Mat2& C) {
+  const double a = C(0, 0), d = C(1, 1), b = 0.5 * (C(0, 1) + C(1, 0));
+  const double mean = 0.5 * (a + d), r = std::hypot(0.5 * (a - d), b);
+  Ellipse e;
+  e.major = std::max(0.0, mean + r);
+  e.minor = std::max(0.0, mean - r);
+  e.angle = 0.5 * std::atan2(2.0 * b, a - d);
+  return e;
+}
+
 Estimate fuse_estimates(const Estimate& a, const Estimate& b) {
   const Mat4 Ia = a.P.inverse(), Ib = b.P.inverse();
   Estimate e;

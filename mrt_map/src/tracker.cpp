@@ -20,10 +20,7 @@ void refine_class(const ConceptualModel& m, Anchor& a, int c, double degree) {
   }
 }
 
-double position_sigma_max(const Mat4& P) {
-  Eigen::SelfAdjointEigenSolver<Mat2> es(P.topLeftCorner<2, 2>());
-  return std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff()));
-}
+double position_sigma_max(const Mat4& P) { return std::sqrt(principal_axes(P.topLeftCorner<2, 2>()).major); }
 }  // namespace
 
 Anchor& Tracker::create(double now, int class_index, double degree) {

@@ -2,6 +2,8 @@
 // hand computations.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "mrt_map/assignment.h"
 #include "mrt_map/kalman.h"
 #include "mrt_map/merger.h"
@@ -79,6 +81,16 @@ TEST(Kalman, CovarianceIntersectionOfTwoTeammates) {
   EXPECT_NEAR(s.P(0, 0), 1.0, 1e-9);
   EXPECT_NEAR(s.P(1, 1), 4.0, 1e-9);
   EXPECT_NEAR(fuse_estimates(a, a).P(0, 0), 0.5, 1e-12);
+}
+
+TEST(Kalman, PrincipalAxes) {
+  // [[3, 1], [1, 3]]: eigenvalues 4 (along (1,1), 45 deg) and 2.
+  Mat2 C;
+  C << 3, 1, 1, 3;
+  const Ellipse e = principal_axes(C);
+  EXPECT_NEAR(e.major, 4.0, 1e-12);
+  EXPECT_NEAR(e.minor, 2.0, 1e-12);
+  EXPECT_NEAR(e.angle, M_PI / 4, 1e-12);
 }
 
 TEST(Merger, JoinsTwoSensorsOfOneObjectOnly) {

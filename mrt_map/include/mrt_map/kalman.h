@@ -45,6 +45,13 @@ void fuse_independent(Vec2& z, Mat2& R, const Vec2& z2, const Mat2& R2);
 /// position and velocity are uncorrelated). `omega` receives w when given.
 Estimate covariance_intersection(const Estimate& a, const Estimate& b, double* omega = nullptr);
 
+/// Eigen decomposition of a 2x2 covariance in closed form: the variances
+/// along the principal axes (major >= minor >= 0) and the major axis angle.
+struct Ellipse {
+  double major = 0.0, minor = 0.0, angle = 0.0;
+};
+Ellipse principal_axes(const Mat2& C);
+
 /// Information fusion of two estimates believed independent.
 Estimate fuse_estimates(const Estimate& a, const Estimate& b);
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "mrt_map/kalman.h"
+
 namespace mrt::map::ros_conv {
 
 std::vector<PerceptObject> from_msg(const mrt_msgs::Percept& p) {
@@ -142,15 +144,14 @@ visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& 
     m.type = visualization_msgs::Marker::CYLINDER;
     m.action = visualization_msgs::Marker::ADD;
     // 2-sigma ellipse from the eigen decomposition of the position block.
-    Eigen::SelfAdjointEigenSolver<Mat2> es(a.fused.P.topLeftCorner<2, 2>());
-    const Vec2 ev = es.eigenvalues().cwiseMax(1e-8);
-    const double yaw = std::atan2(es.eigenvectors()(1, 1), es.eigenvectors()(0, 1));
+    const Ellipse el = principal_axes(a.fused.P.topLeftCorner<2, 2>());
+    const double yaw = el.angle;
     m.pose.position.x = a.fused.x(0);
     m.pose.position.y = a.fused.x(1);
     m.pose.orientation.z = std::sin(yaw / 2);
     m.pose.orientation.w = std::cos(yaw / 2);
-    m.scale.x = 4 * std::sqrt(ev(1));
-    m.scale.y = 4 * std::sqrt(ev(0));
+    m.scale.x = std::max(0.01, 4 * std::sqrt(el.major));
+    m.scale.y = std::max(0.01, 4 * std::sqrt(el.minor));
     m.scale.z = 0.02;
     m.color = color(cls);
     if (a.status == AnchorStatus::kCoasting) m.color.a = 0.3f;
