@@ -1,0 +1,234 @@
+// map_bench: MAP for a team of 5 robots on the MSL field (bench/team_sim.*:
+// ball and 5 opponents moving, a camera model per robot), against the
+// simulation's ground truth; then the full-cycle time of 50 objects x 5
+// robots. Prints `name: value unit` lines (scripts/bench.sh).
+//   map_bench [minutes=10] [seed=1] [model=config/robocup.yaml]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <map>
+#include <memory>
+
+#include "mrt_map/world_model.h"
+#include "team_sim.h"
+
+using namespace mrt::map;
+using bench::TeamSim;
+
+namespace {
+
+constexpr double kDt = 1.0 / 30.0;       // camera and MAP rate
+constexpr double kTeamPeriod = 0.1;      // team exchange, 10 Hz
+constexpr double kTeamLatency = 0.05;    // s, network delay
+
+struct Stats {
+  double se = 0.0;  // squared errors within 5 m of the nearest observer
+  long n_err = 0;
+  long known = 0, steps = 0;
+  double rmse() const { return n_err ? std::sqrt(se / static_cast<double>(n_err)) : NAN; }
+  double availability() const { return steps ? static_cast<double>(known) / static_cast<double>(steps) : NAN; }
+};
+
+// The ball anchor MAP would give Mr. BRIAN: the most reliable confirmed one.
+const Anchor* ball_anchor(const WorldModel& w, int ball_class, double now) {
+  const Anchor* best = nullptr;
+  for (const Anchor& a : w.tracker().anchors())
+    if (a.status == AnchorStatus::kConfirmed && w.model().is_a(a.class_index, ball_class) &&
+        (!best || w.tracker().reliability(a, now) > w.tracker().reliability(*best, now)))
+      best = &a;
+  return best;
+}
+
+void score_ball(const WorldModel& w, int ball_class, double now, const Vec2& truth, bool near, Stats& s) {
+  ++s.steps;
+  const Anchor* a = ball_anchor(w, ball_class, now);
+  if (!a) return;
+  const double e = (a->fused.x.head<2>() - truth).norm();
+  if (e < 0.5) ++s.known;  // known = a confirmed ball anchor within 0.5 m
+  if (near) {
+    s.se += e * e;
+    ++s.n_err;
+  }
+}
+
+struct Message {
+  double deliver;
+  std::string robot;
+  std::vector<RemoteTrack> tracks;
+  double stamp;
+  RobotPose pose;
+};
+
+struct AnchorCounts {
+  double robots = 0.0, balls = 0.0, alone_robots = 0.0;
+};
+
+void count_anchors(const WorldModel& team, const WorldModel& alone, int ball_class, int opp_class, AnchorCounts& c) {
+  for (const Anchor& a : team.tracker().anchors())
+    if (a.status == AnchorStatus::kConfirmed) {
+      c.robots += team.model().is_a(a.class_index, opp_class);
+      c.balls += team.model().is_a(a.class_index, ball_class);
+    }
+  for (const Anchor& a : alone.tracker().anchors())
+    if (a.status == AnchorStatus::kConfirmed) c.alone_robots += alone.model().is_a(a.class_index, opp_class);
+}
+
+// Each opponent keeps its anchor while that anchor is confirmed and within
+// 0.5 m of it (as in the CLEAR MOT metrics); otherwise it takes the nearest
+// confirmed Opponent anchor within 0.5 m; taking a different id than the
+// last one is an identity switch.
+long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, std::vector<long>& last_id) {
+  long switches = 0;
+  for (std::size_t o = 0; o < sim.opponents().size(); ++o) {
+    const Anchor* best = nullptr;
+    double best_d = 0.5;
+    for (const Anchor& a : w.tracker().anchors()) {
+      if (a.status != AnchorStatus::kConfirmed || !w.model().is_a(a.class_index, opp_class)) continue;
+      const double d = (a.fused.x.head<2>() - sim.opponents()[o].p).norm();
+      if (d < 0.5 && static_cast<long>(a.id) == last_id[o]) {
+        best = &a;
+        break;
+      }
+      if (d < best_d) best = &a, best_d = d;
+    }
+    if (!best) continue;
+    if (last_id[o] >= 0 && last_id[o] != static_cast<long>(best->id)) ++switches;
+    last_id[o] = best->id;
+  }
+  return switches;
+}
+
+void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
+  TeamSim sim(seed);
+  const bench::CameraModel cam;
+  const int n = static_cast<int>(sim.mates().size());
+  std::vector<std::unique_ptr<WorldModel>> team, alone;
+  for (int i = 0; i < n; ++i) {
+    team.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
+    alone.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
+  }
+  const int ball_class = model.find("Ball"), opp_class = model.find("Opponent");
+  std::vector<Stats> team_stats(n), alone_stats(n);
+  std::deque<Message> network;
+  // Identity switches: for each opponent, the id of robot 0's team anchor on it.
+  std::vector<long> last_id(sim.opponents().size(), -1);
+  long switches = 0;
+  double next_team = 0.0;
+  AnchorCounts counts;
+  const long steps = static_cast<long>(minutes * 60.0 / kDt);
+  for (long k = 0; k < steps; ++k) {
+    const double t = k * kDt;
+    sim.step(kDt);
+    while (!network.empty() && network.front().deliver <= t) {
+      const Message& m = network.front();
+      for (int i = 0; i < n; ++i) team[i]->add_teammate_model(m.robot, m.tracks, m.stamp, &m.pose);
+      network.pop_front();
+    }
+    double nearest = INFINITY;
+    for (const auto& b : sim.mates()) nearest = std::min(nearest, (b.p - sim.ball().p).norm());
+    for (int i = 0; i < n; ++i) {
+      RobotPose pose;
+      const auto objects = sim.see(i, cam, pose);
+      for (auto* w : {team[i].get(), alone[i].get()}) {
+        w->set_robot_pose(pose, t);
+        w->add_percept(objects, pose, t, t, "omnivision");
+        w->update(t);
+      }
+      const bool near = nearest <= 5.0 && k * kDt > 2.0;
+      if (k * kDt > 2.0) {
+        score_ball(*team[i], ball_class, t, sim.ball().p, near, team_stats[i]);
+        score_ball(*alone[i], ball_class, t, sim.ball().p, near, alone_stats[i]);
+      }
+      if (t >= next_team)
+        network.push_back({t + kTeamLatency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
+    }
+    if (t >= next_team) next_team += kTeamPeriod;
+    count_anchors(*team[0], *alone[0], ball_class, opp_class, counts);
+    switches += identity_switches(*team[0], opp_class, sim, last_id);
+  }
+  Stats team_all;
+  double best_alone_rmse = INFINITY, best_alone_avail = 0.0;
+  for (int i = 0; i < n; ++i) {
+    team_all.se += team_stats[i].se;
+    team_all.n_err += team_stats[i].n_err;
+    team_all.known += team_stats[i].known;
+    team_all.steps += team_stats[i].steps;
+    best_alone_rmse = std::min(best_alone_rmse, alone_stats[i].rmse());
+    best_alone_avail = std::max(best_alone_avail, alone_stats[i].availability());
+  }
+  std::printf("map_sim_minutes: %.1f min\n", minutes);
+  std::printf("map_ball_rmse_team_within_5m: %.4f m\n", team_all.rmse());
+  std::printf("map_ball_rmse_best_single_within_5m: %.4f m\n", best_alone_rmse);
+  std::printf("map_ball_availability_team: %.2f %%\n", 100.0 * team_all.availability());
+  std::printf("map_ball_availability_best_single: %.2f %%\n", 100.0 * best_alone_avail);
+  const double per10 = static_cast<double>(switches) / static_cast<double>(sim.opponents().size()) /
+                       (minutes / 10.0);
+  std::printf("map_opponent_id_switches: %ld count\n", switches);
+  std::printf("map_confirmed_opponent_anchors_team_mean: %.2f count (truth: %zu)\n", counts.robots / steps,
+              sim.opponents().size());
+  std::printf("map_confirmed_opponent_anchors_single_mean: %.2f count\n", counts.alone_robots / steps);
+  std::printf("map_confirmed_ball_anchors_team_mean: %.2f count (truth: 1)\n", counts.balls / steps);
+  std::printf("map_opponent_id_switches_per_opponent_per_10min: %.2f count\n", per10);
+}
+
+// 50 objects seen by a robot and by each of its 4 teammates: one full
+// cycle (classify 50 percept objects, merge, associate, 4 x 50 teammates'
+// anchors compensated and fused, life cycle, crisp data).
+void cycle_time(const ConceptualModel& model) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ux(-8.5, 8.5), uy(-5.5, 5.5);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  std::vector<Vec2> objects(50);
+  for (Vec2& p : objects) p = Vec2(ux(rng), uy(rng));
+  std::vector<std::unique_ptr<WorldModel>> team;
+  for (int i = 0; i < 5; ++i) team.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
+  auto percepts = [&](const RobotPose& pose) {
+    std::vector<PerceptObject> out;
+    for (const Vec2& p : objects) {
+      PerceptObject o;
+      o.membership_class = "Robot";
+      o.attributes["color"].symbol = "cyan";
+      const Vec2 d = p - Vec2(pose.x, pose.y);
+      o.attributes["distance"] = {d.norm() + noise(rng), "", 0.02, 1.0};
+      o.attributes["bearing"] = {std::atan2(d.y(), d.x()), "", 0.005, 1.0};
+      out.push_back(o);
+    }
+    return out;
+  };
+  RobotPose pose;
+  pose.cov = 1e-4 * Mat2::Identity();
+  double t = 0.0, total = 0.0;
+  int measured = 0;
+  for (int k = 0; k < 600; ++k, t += kDt) {
+    for (int i = 1; i < 5; ++i) {
+      team[i]->add_percept(percepts(pose), pose, t, t, "cam");
+      team[i]->update(t);
+    }
+    const auto objs = percepts(pose);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 1; i < 5; ++i) team[0]->add_teammate_model(team[i]->options().robot, team[i]->local_tracks(), t);
+    team[0]->add_percept(objs, pose, t, t, "cam");
+    team[0]->update(t);
+    const auto c = team[0]->crisp(t);
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (k >= 100) total += dt, ++measured;
+    if (c.empty()) std::abort();
+  }
+  const double ms = 1e3 * total / measured;
+  std::printf("map_anchors_in_cycle_test: %zu count\n", team[0]->tracker().anchors().size());
+  std::printf("map_cycle_50x5: %.4f ms\n", ms);
+  std::printf("map_cycle_50x5_vs_1ms_budget: %.3f ratio\n", ms / 1.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double minutes = argc > 1 ? std::atof(argv[1]) : 10.0;
+  const unsigned seed = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1u;
+  const ConceptualModel model = ConceptualModel::load(argc > 3 ? argv[3] : MRT_MAP_CONFIG_DIR "/robocup.yaml");
+  cycle_time(model);
+  team_run(model, minutes > 0 ? minutes : 10.0, seed);
+  return 0;
+}

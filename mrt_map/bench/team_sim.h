@@ -1,0 +1,55 @@
+// The benchmark's own little world (ROS-free, not mrt_sim): an MSL field
+// with 5 teammates, 5 opponents and a ball moving, and a camera model per
+// robot (range limit, occlusion by robots, distance-dependent noise,
+// missed detections, clutter) producing mrt_map percept objects.
+#pragma once
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mrt_map/types.h"
+
+namespace mrt::map::bench {
+
+struct Body {
+  Vec2 p = Vec2::Zero();
+  Vec2 v = Vec2::Zero();
+  Vec2 goal = Vec2::Zero();
+  double speed = 1.0;
+  double radius = 0.25;
+};
+
+struct CameraModel {
+  double range = 6.0;           // m
+  double sigma_d0 = 0.005;      // m
+  double sigma_d_rel = 0.01;    // fraction of the distance
+  double sigma_bearing = 0.005; // rad
+  double p_detect = 0.9;
+  double clutter_rate = 0.03;   // false balls per frame
+  double pose_sigma = 0.02;     // m, self-localisation error
+  double theta_sigma = 0.005;   // rad
+};
+
+class TeamSim {
+ public:
+  explicit TeamSim(unsigned seed, int teammates = 5, int opponents = 5);
+  void step(double dt);
+  const std::vector<Body>& mates() const { return mates_; }
+  const std::vector<Body>& opponents() const { return opps_; }
+  const Body& ball() const { return ball_; }
+  /// What robot i's camera sees now, and the pose it believes it has.
+  std::vector<PerceptObject> see(int i, const CameraModel& cam, RobotPose& believed);
+  /// True when the segment a-b passes through a robot other than `skip_mate`/`skip_opp`.
+  bool occluded(const Vec2& a, const Vec2& b, int skip_mate, int skip_opp) const;
+
+ private:
+  void move(Body& b, double dt);
+  Vec2 random_point();
+  std::mt19937 rng_;
+  std::vector<Body> mates_, opps_;
+  Body ball_;
+  double kick_timer_ = 0.0;
+};
+
+}  // namespace mrt::map::bench

@@ -1,0 +1,72 @@
+// Tracker (manual chapter 8): one anchor per real object with a stable id,
+// a Kalman filter per anchor on the robot's own observations, the anchor
+// life cycle (tentative -> confirmed -> coasting -> dropped), global
+// nearest neighbour association on gated Mahalanobis costs, and the team
+// estimate: the covariance intersection of the own filter and the
+// teammates' anchors linked to it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mrt_map/conceptual_model.h"
+#include "mrt_map/merger.h"
+#include "mrt_map/types.h"
+
+namespace mrt::map {
+
+class Tracker {
+ public:
+  explicit Tracker(const ConceptualModel& model) : model_(model), merger_(model) {}
+
+  /// One cycle at time `now`: predict, associate and update with the own
+  /// (already merged) observations, link and fuse the teammates' anchors
+  /// (already latency-compensated to `now`), advance the life cycle.
+  void cycle(double now, const std::vector<Observation>& observations, const std::vector<RemoteTrack>& remote);
+
+  /// A teammate's reported pose (world frame): Robot anchors it explains
+  /// (Mahalanobis within team.gate) become the class refined_by teammate_pose.
+  void set_teammate_pose(const std::string& robot, const Vec2& p, const Mat2& cov, double stamp);
+
+  /// Live anchors (not dropped), ordered by id.
+  const std::vector<Anchor>& anchors() const { return anchors_; }
+  /// reliability = degree * exp(-(now - last_seen) / tau).
+  double reliability(const Anchor& a, double now) const;
+  /// Anchors the robot's own sensors confirm (confirm_hits own sightings,
+  /// the last within coast_after), for the teammates: their local
+  /// estimates only (so a teammate never gets its own data back).
+  std::vector<RemoteTrack> local_tracks(const std::string& robot) const;
+  std::uint64_t dropped_count() const { return dropped_; }
+  /// Anchors joined into an older one (two symbols for one object).
+  std::uint64_t coalesced_count() const { return coalesced_; }
+
+ private:
+  void associate_local(double now, const std::vector<Observation>& obs);
+  void associate_remote(double now, const std::vector<RemoteTrack>& remote);
+  void fuse(double now);
+  void coalesce();
+  void life_cycle(double now);
+  void refine_teammates(double now);
+  Anchor& create(double now, int class_index, double degree);
+
+  const ConceptualModel& model_;
+  Merger merger_;
+  std::vector<Anchor> anchors_;
+  std::uint32_t next_id_ = 1;
+  std::uint64_t dropped_ = 0, coalesced_ = 0, coalesced_cycle_ = 0;
+  double now_ = 0.0;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> close_since_;  // coalescence candidates
+  struct TeammatePose {
+    Vec2 p;
+    Mat2 cov;
+    double stamp;
+  };
+  std::map<std::string, TeammatePose> teammates_;
+  std::set<std::uint32_t> seen_;  // anchors supported this cycle
+};
+
+}  // namespace mrt::map

@@ -1,0 +1,211 @@
+// map_node: MAP for one robot of a team. Wiring only: parameters -> options,
+// messages <-> the mrt_map core (see README for the API table).
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <mrt_msgs/CrispDataArray.h>
+#include <mrt_msgs/Percept.h>
+#include <mrt_msgs/WorldModel.h>
+#include <ros/ros.h>
+#include <tf2/utils.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <memory>
+
+#include "mrt_common_ros/params.h"
+#include "mrt_map/world_model.h"
+#include "ros/conversions.h"
+
+namespace {
+
+using mrt::ros_common::ParamReader;
+namespace conv = mrt::map::ros_conv;
+
+struct NodeOptions {
+  std::string model;
+  std::string world_frame = "map";
+  std::string base_frame;  // default "<robot>/base_link"
+  double rate = 30.0;
+  double team_rate = 10.0;
+  std::string team_topic = "/team/world_models";
+  std::string dcdt_out_topic;  // legacy DCDT teammates, through the bridge
+  std::string dcdt_in_topic;
+  double pose_sigma = 0.02;
+  double theta_sigma = 0.01;
+  mrt::map::WorldModelOptions core;
+};
+
+NodeOptions read_options(ros::NodeHandle& pnh) {
+  NodeOptions o;
+  ParamReader p(pnh);
+  p.require("model", o.model, "the path of the conceptual model YAML file");
+  std::string ns = ros::this_node::getNamespace();
+  while (!ns.empty() && ns.front() == '/') ns.erase(0, 1);
+  o.core.robot = ns.empty() ? "robot" : ns;
+  p.get("robot", o.core.robot);
+  ParamReader::check(!o.core.robot.empty() && o.core.robot.find('/') == std::string::npos, "robot",
+                     "a non-empty name without '/'");
+  o.base_frame = o.core.robot + "/base_link";
+  p.get("world_frame", o.world_frame).get("base_frame", o.base_frame);
+  ParamReader::check(!o.world_frame.empty(), "world_frame", "a non-empty frame id");
+  p.get_positive("rate", o.rate).get_positive("team_rate", o.team_rate);
+  p.get("team_topic", o.team_topic).get("dcdt_out_topic", o.dcdt_out_topic).get("dcdt_in_topic", o.dcdt_in_topic);
+  p.get_positive("max_percept_age", o.core.max_percept_age);
+  p.get_non_negative("pose_sigma", o.pose_sigma).get_non_negative("theta_sigma", o.theta_sigma);
+  return o;
+}
+
+class MapNode {
+ public:
+  MapNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
+      : opt_(read_options(pnh)), model_(mrt::map::ConceptualModel::load(opt_.model)), world_(model_, opt_.core),
+        tf_listener_(tf_buffer_) {
+    percept_sub_ = nh.subscribe("percepts", 20, &MapNode::on_percept, this);
+    coordination_sub_ = nh.subscribe("coordination", 10, &MapNode::on_coordination, this);
+    model_pub_ = nh.advertise<mrt_msgs::WorldModel>("world_model", 5);
+    crisp_pub_ = nh.advertise<mrt_msgs::CrispDataArray>("crisp_data", 5);
+    marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("map_markers", 2);
+    if (!opt_.team_topic.empty()) {
+      team_pub_ = nh.advertise<mrt_msgs::WorldModel>(opt_.team_topic, 10);
+      team_sub_ = nh.subscribe(opt_.team_topic, 20, &MapNode::on_team, this);
+    }
+    if (!opt_.dcdt_out_topic.empty()) dcdt_pub_ = nh.advertise<mrt_msgs::Percept>(opt_.dcdt_out_topic, 10);
+    if (!opt_.dcdt_in_topic.empty()) dcdt_sub_ = nh.subscribe(opt_.dcdt_in_topic, 20, &MapNode::on_dcdt, this);
+    diagnostics_.setHardwareID(opt_.core.robot);
+    diagnostics_.add("MAP world model", this, &MapNode::diagnose);
+    cycle_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &MapNode::on_cycle, this);
+    team_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.team_rate), &MapNode::on_team_timer, this);
+  }
+
+ private:
+  bool pose_at(const std::string& frame, const ros::Time& stamp, mrt::map::RobotPose& pose) {
+    geometry_msgs::TransformStamped t;
+    try {
+      t = tf_buffer_.lookupTransform(opt_.world_frame, frame, stamp, ros::Duration(0.02));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "map_node: no pose of %s in %s: %s", frame.c_str(), opt_.world_frame.c_str(), e.what());
+      return false;
+    }
+    pose.x = t.transform.translation.x;
+    pose.y = t.transform.translation.y;
+    pose.theta = tf2::getYaw(t.transform.rotation);
+    pose.cov = opt_.pose_sigma * opt_.pose_sigma * mrt::map::Mat2::Identity();
+    pose.theta_sigma = opt_.theta_sigma;
+    return true;
+  }
+
+  void on_percept(const mrt_msgs::Percept& p) {
+    ++percepts_;
+    const std::string frame = p.header.frame_id.empty() ? opt_.base_frame : p.header.frame_id;
+    mrt::map::RobotPose pose;
+    const double now = ros::Time::now().toSec(), stamp = p.header.stamp.toSec();
+    const bool stale = std::fabs(now - stamp) > opt_.core.max_percept_age;  // the core counts it
+    if (!stale && !pose_at(frame, p.header.stamp, pose)) {
+      no_pose_ += p.objects.size();
+      return;
+    }
+    const auto before = world_.counters();
+    world_.add_percept(conv::from_msg(p), pose, stamp, now, p.sensor.empty() ? "sensor" : p.sensor);
+    const auto& after = world_.counters();
+    if (after.accepted - before.accepted < p.objects.size())
+      ROS_WARN_THROTTLE(5.0, "map_node: dropped %zu of %zu objects of a percept from %s (unknown class, non-finite, "
+                        "stale or unmatched; see diagnostics)",
+                        p.objects.size() - static_cast<std::size_t>(after.accepted - before.accepted),
+                        p.objects.size(), p.sensor.c_str());
+  }
+
+  void on_coordination(const mrt_msgs::CrispDataArray& a) {
+    for (const auto& d : a.data) {
+      if (!std::isfinite(d.value) || !(d.reliability >= 0.0 && d.reliability <= 1.0)) {
+        ++bad_parameters_;
+        continue;
+      }
+      world_.set_parameter(d.name, d.value, d.reliability, a.header.stamp.toSec());
+    }
+  }
+
+  void on_team(const mrt_msgs::WorldModel& m) {
+    if (m.robot == opt_.core.robot || !m.local_only) return;
+    std::vector<mrt::map::RemoteTrack> tracks;
+    for (const auto& a : m.anchors) {
+      mrt::map::RemoteTrack t;
+      if (conv::from_msg(a, model_, m.header.stamp, t)) tracks.push_back(std::move(t));
+      else ++bad_anchors_;
+    }
+    mrt::map::RobotPose pose;
+    pose.x = m.robot_x;
+    pose.y = m.robot_y;
+    pose.theta = m.robot_theta;
+    pose.cov << m.robot_covariance[0], m.robot_covariance[1], m.robot_covariance[2], m.robot_covariance[3];
+    const bool pose_ok = std::isfinite(pose.x) && std::isfinite(pose.y) && pose.cov.allFinite();
+    world_.add_teammate_model(m.robot, tracks, m.header.stamp.toSec(), pose_ok ? &pose : nullptr);
+    ++team_models_;
+  }
+
+  void on_dcdt(const mrt_msgs::Percept& p) {
+    if (p.robot == opt_.core.robot || p.robot.empty()) return;
+    world_.add_teammate_model(p.robot, conv::from_dcdt_percept(p, model_), p.header.stamp.toSec());
+    ++team_models_;
+  }
+
+  void on_cycle(const ros::TimerEvent&) {
+    const ros::Time now = ros::Time::now();
+    mrt::map::RobotPose pose;
+    if (pose_at(opt_.base_frame, ros::Time(0), pose)) world_.set_robot_pose(pose, now.toSec());
+    world_.update(now.toSec());
+    model_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, false));
+    crisp_pub_.publish(conv::to_msg(world_.crisp(now.toSec()), now));
+    if (marker_pub_.getNumSubscribers() > 0) marker_pub_.publish(conv::markers(world_, opt_.world_frame, now));
+    diagnostics_.update();
+  }
+
+  void on_team_timer(const ros::TimerEvent&) {
+    const ros::Time now = ros::Time::now();
+    if (team_pub_) team_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, true));
+    if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, opt_.world_frame, now));
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
+    const auto& c = world_.counters();
+    const std::uint64_t dropped =
+        c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.stale_team + no_pose_ + bad_anchors_;
+    s.summary(dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK,
+              dropped > 0 ? "input dropped (see counters)" : "ok");
+    s.add("anchors", world_.tracker().anchors().size());
+    s.add("anchors dropped", world_.tracker().dropped_count());
+    s.add("percepts", percepts_);
+    s.add("objects accepted", c.accepted);
+    s.add("dropped unknown class", c.unknown_class);
+    s.add("dropped non-finite", c.non_finite);
+    s.add("dropped no position", c.no_position);
+    s.add("dropped below matching threshold", c.unmatched);
+    s.add("dropped stale", c.stale);
+    s.add("dropped no robot pose", no_pose_);
+    s.add("teammate models", team_models_);
+    s.add("teammate anchors stale", c.stale_team);
+    s.add("teammate anchors malformed", bad_anchors_);
+    s.add("coordination parameters malformed", bad_parameters_);
+  }
+
+  NodeOptions opt_;
+  mrt::map::ConceptualModel model_;
+  mrt::map::WorldModel world_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  ros::Subscriber percept_sub_, coordination_sub_, team_sub_, dcdt_sub_;
+  ros::Publisher model_pub_, crisp_pub_, marker_pub_, team_pub_, dcdt_pub_;
+  ros::Timer cycle_timer_, team_timer_;
+  diagnostic_updater::Updater diagnostics_;
+  std::uint64_t percepts_ = 0, no_pose_ = 0, bad_anchors_ = 0, bad_parameters_ = 0, team_models_ = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "map_node");
+  return mrt::ros_common::run_node([] {
+    ros::NodeHandle nh, pnh("~");
+    MapNode node(nh, pnh);
+    ros::spin();
+    return 0;
+  });
+}

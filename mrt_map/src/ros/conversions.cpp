@@ -1,0 +1,253 @@
+#include "ros/conversions.h"
+
+#include <cmath>
+
+#include "mrt_map/kalman.h"
+
+namespace mrt::map::ros_conv {
+
+std::vector<PerceptObject> from_msg(const mrt_msgs::Percept& p) {
+  std::vector<PerceptObject> out;
+  out.reserve(p.objects.size());
+  for (const auto& o : p.objects) {
+    PerceptObject q;
+    q.name = o.name;
+    q.membership_class = o.membership_class;
+    for (const auto& a : o.attributes) q.attributes[a.name] = {a.value, a.symbol, a.variability, a.reliability};
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+namespace {
+void fill(mrt_msgs::Anchor& m, const Estimate& e) {
+  m.x = e.x(0);
+  m.y = e.x(1);
+  m.vx = e.x(2);
+  m.vy = e.x(3);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) m.covariance[static_cast<std::size_t>(4 * i + j)] = e.P(i, j);
+}
+}  // namespace
+
+mrt_msgs::Anchor to_msg(const Anchor& a, const ConceptualModel& m, double reliability) {
+  mrt_msgs::Anchor out;
+  out.id = a.id;
+  out.membership_class = m.at(a.class_index).name;
+  out.matching_degree = a.degree;
+  out.status = static_cast<std::uint8_t>(a.status);
+  fill(out, a.fused);
+  out.reliability = reliability;
+  out.last_seen = ros::Time(std::max(0.0, a.last_seen));
+  out.sources.assign(a.sources.begin(), a.sources.end());
+  return out;
+}
+
+mrt_msgs::Anchor to_msg(const RemoteTrack& t, const ConceptualModel& m) {
+  mrt_msgs::Anchor out;
+  out.id = t.id;
+  out.membership_class = m.at(t.class_index).name;
+  out.matching_degree = t.degree;
+  out.status = mrt_msgs::Anchor::CONFIRMED;
+  fill(out, t.estimate);
+  out.reliability = t.degree;
+  out.last_seen = ros::Time(std::max(0.0, t.last_seen));
+  out.sources.assign(t.sensors.begin(), t.sensors.end());
+  return out;
+}
+
+bool from_msg(const mrt_msgs::Anchor& a, const ConceptualModel& m, const ros::Time& stamp, RemoteTrack& out) {
+  out.class_index = m.find(a.membership_class);
+  if (out.class_index < 0) return false;
+  out.id = a.id;
+  out.degree = a.matching_degree;
+  out.estimate.x << a.x, a.y, a.vx, a.vy;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) out.estimate.P(i, j) = a.covariance[static_cast<std::size_t>(4 * i + j)];
+  out.estimate.stamp = stamp.toSec();
+  out.last_seen = a.last_seen.toSec();
+  out.sensors.clear();
+  out.sensors.insert(a.sources.begin(), a.sources.end());
+  // A covariance must be finite, symmetric and positive definite.
+  const Mat4& P = out.estimate.P;
+  if (!out.estimate.x.allFinite() || !P.allFinite() || !std::isfinite(out.degree)) return false;
+  if ((P - P.transpose()).cwiseAbs().maxCoeff() > 1e-9 * (1.0 + P.cwiseAbs().maxCoeff())) return false;
+  return Eigen::LLT<Mat4>(P).info() == Eigen::Success;
+}
+
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only) {
+  mrt_msgs::WorldModel out;
+  out.header.stamp = stamp;
+  out.header.frame_id = frame;
+  out.robot = w.options().robot;
+  out.local_only = local_only;
+  const RobotPose& p = w.robot_pose();
+  out.robot_x = p.x;
+  out.robot_y = p.y;
+  out.robot_theta = p.theta;
+  out.robot_covariance = {p.cov(0, 0), p.cov(0, 1), p.cov(1, 0), p.cov(1, 1)};
+  const double now = stamp.toSec();
+  if (local_only) {
+    for (const RemoteTrack& t : w.local_tracks()) out.anchors.push_back(to_msg(t, w.model()));
+  } else {
+    for (const Anchor& a : w.tracker().anchors()) out.anchors.push_back(to_msg(a, w.model(), w.tracker().reliability(a, now)));
+  }
+  for (const auto& [name, d] : w.parameters()) {
+    mrt_msgs::CrispData c;
+    c.name = name;
+    c.value = d.value;
+    c.reliability = d.reliability;
+    out.parameters.push_back(c);
+  }
+  return out;
+}
+
+mrt_msgs::CrispDataArray to_msg(const std::vector<CrispDatum>& data, const ros::Time& stamp) {
+  mrt_msgs::CrispDataArray out;
+  out.header.stamp = stamp;
+  for (const CrispDatum& d : data) {
+    mrt_msgs::CrispData c;
+    c.name = d.name;
+    c.value = d.value;
+    c.reliability = d.reliability;
+    out.data.push_back(c);
+  }
+  return out;
+}
+
+namespace {
+std_msgs::ColorRGBA color(const std::string& cls) {
+  std_msgs::ColorRGBA c;
+  c.a = 0.8f;
+  if (cls == "Ball") c.r = 1.0f, c.g = 0.5f;
+  else if (cls == "Teammate") c.r = 1.0f, c.b = 1.0f;
+  else if (cls == "Opponent") c.g = 1.0f, c.b = 1.0f;
+  else c.r = c.g = c.b = 0.6f;
+  return c;
+}
+}  // namespace
+
+visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& frame, const ros::Time& stamp) {
+  visualization_msgs::MarkerArray out;
+  visualization_msgs::Marker clear;
+  clear.header.frame_id = frame;
+  clear.header.stamp = stamp;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  out.markers.push_back(clear);
+  for (const Anchor& a : w.tracker().anchors()) {
+    if (a.status != AnchorStatus::kConfirmed && a.status != AnchorStatus::kCoasting) continue;
+    const std::string cls = w.model().at(a.class_index).name;
+    visualization_msgs::Marker m;
+    m.header = clear.header;
+    m.ns = "map_ellipses";
+    m.id = static_cast<int>(a.id);
+    m.type = visualization_msgs::Marker::CYLINDER;
+    m.action = visualization_msgs::Marker::ADD;
+    // 2-sigma ellipse from the eigen decomposition of the position block.
+    const Ellipse el = principal_axes(a.fused.P.topLeftCorner<2, 2>());
+    const double yaw = el.angle;
+    m.pose.position.x = a.fused.x(0);
+    m.pose.position.y = a.fused.x(1);
+    m.pose.orientation.z = std::sin(yaw / 2);
+    m.pose.orientation.w = std::cos(yaw / 2);
+    m.scale.x = std::max(0.01, 4 * std::sqrt(el.major));
+    m.scale.y = std::max(0.01, 4 * std::sqrt(el.minor));
+    m.scale.z = 0.02;
+    m.color = color(cls);
+    if (a.status == AnchorStatus::kCoasting) m.color.a = 0.3f;
+    out.markers.push_back(m);
+    visualization_msgs::Marker t = m;
+    t.ns = "map_ids";
+    t.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    t.pose.orientation = geometry_msgs::Quaternion();
+    t.pose.orientation.w = 1;
+    t.pose.position.z = 0.4;
+    t.scale.x = t.scale.y = t.scale.z = 0.25;
+    t.color.r = t.color.g = t.color.b = t.color.a = 1.0f;
+    t.text = cls + " " + std::to_string(a.id);
+    out.markers.push_back(t);
+    visualization_msgs::Marker v = t;
+    v.ns = "map_velocities";
+    v.type = visualization_msgs::Marker::ARROW;
+    v.text.clear();
+    v.pose = geometry_msgs::Pose();
+    v.pose.orientation.w = 1;
+    geometry_msgs::Point p0, p1;
+    p0.x = a.fused.x(0);
+    p0.y = a.fused.x(1);
+    p1.x = p0.x + a.fused.x(2);
+    p1.y = p0.y + a.fused.x(3);
+    v.points = {p0, p1};
+    v.scale.x = 0.04;
+    v.scale.y = 0.08;
+    v.scale.z = 0.0;
+    v.color = m.color;
+    out.markers.push_back(v);
+  }
+  return out;
+}
+
+namespace {
+mrt_msgs::Attribute attr(const std::string& name, double value, double variability) {
+  mrt_msgs::Attribute a;
+  a.name = name;
+  a.value = value;
+  a.variability = variability;
+  a.reliability = 1.0;
+  return a;
+}
+}  // namespace
+
+mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp) {
+  mrt_msgs::Percept p;
+  p.header.stamp = stamp;
+  p.header.frame_id = frame;
+  p.sensor = "map";
+  p.robot = w.options().robot;
+  for (const RemoteTrack& t : w.local_tracks()) {
+    mrt_msgs::PerceptObject o;
+    o.name = std::to_string(t.id);
+    o.membership_class = w.model().at(t.class_index).name;
+    const Mat4& P = t.estimate.P;
+    o.attributes = {attr("x", t.estimate.x(0), std::sqrt(P(0, 0))), attr("y", t.estimate.x(1), std::sqrt(P(1, 1))),
+                    attr("vx", t.estimate.x(2), std::sqrt(P(2, 2))), attr("vy", t.estimate.x(3), std::sqrt(P(3, 3))),
+                    attr("cov_xy", P(0, 1), 0.0), attr("last_seen_age", stamp.toSec() - t.last_seen, 0.0),
+                    attr("degree", t.degree, 0.0)};
+    p.objects.push_back(o);
+  }
+  return p;
+}
+
+std::vector<RemoteTrack> from_dcdt_percept(const mrt_msgs::Percept& p, const ConceptualModel& m) {
+  std::vector<RemoteTrack> out;
+  for (const auto& o : p.objects) {
+    std::map<std::string, const mrt_msgs::Attribute*> a;
+    for (const auto& x : o.attributes) a[x.name] = &x;
+    RemoteTrack t;
+    t.robot = p.robot;
+    t.class_index = m.find(o.membership_class);
+    bool ok = t.class_index >= 0;
+    for (const char* k : {"x", "y", "vx", "vy", "cov_xy", "last_seen_age", "degree"}) ok = ok && a.count(k);
+    if (!ok) continue;
+    try {
+      t.id = static_cast<std::uint32_t>(std::stoul(o.name));
+    } catch (const std::exception&) {
+      continue;
+    }
+    t.degree = a["degree"]->value;
+    t.estimate.x << a["x"]->value, a["y"]->value, a["vx"]->value, a["vy"]->value;
+    t.estimate.P = Vec4(std::pow(a["x"]->variability, 2), std::pow(a["y"]->variability, 2),
+                        std::pow(a["vx"]->variability, 2), std::pow(a["vy"]->variability, 2))
+                       .asDiagonal();
+    t.estimate.P(0, 1) = t.estimate.P(1, 0) = a["cov_xy"]->value;
+    t.estimate.stamp = p.header.stamp.toSec();
+    t.last_seen = t.estimate.stamp - a["last_seen_age"]->value;
+    t.sensors = {p.robot + "/map"};
+    if (!t.estimate.x.allFinite() || !t.estimate.P.allFinite() || Eigen::LLT<Mat4>(t.estimate.P).info() != Eigen::Success)
+      continue;
+    out.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace mrt::map::ros_conv

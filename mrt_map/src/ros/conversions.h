@@ -1,0 +1,46 @@
+// mrt_msgs <-> mrt_map core types, and the rviz markers of a world model.
+// Also the DCDT form of anchors: a mrt_msgs/Percept (what the DCDT bridge
+// carries as MRT XML) with one object per anchor.
+#pragma once
+
+#include <mrt_msgs/CrispDataArray.h>
+#include <mrt_msgs/Percept.h>
+#include <mrt_msgs/WorldModel.h>
+#include <ros/time.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <string>
+#include <vector>
+
+#include "mrt_map/world_model.h"
+
+namespace mrt::map::ros_conv {
+
+std::vector<PerceptObject> from_msg(const mrt_msgs::Percept& p);
+
+mrt_msgs::Anchor to_msg(const Anchor& a, const ConceptualModel& m, double reliability);
+/// The own-sensors track sent to the teammates.
+mrt_msgs::Anchor to_msg(const RemoteTrack& t, const ConceptualModel& m);
+
+/// A teammate's anchor; false when its class is unknown here or a value is
+/// not finite.
+bool from_msg(const mrt_msgs::Anchor& a, const ConceptualModel& m, const ros::Time& stamp, RemoteTrack& out);
+
+/// The team model (local_only = false) or the team exchange (true).
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only);
+
+mrt_msgs::CrispDataArray to_msg(const std::vector<CrispDatum>& data, const ros::Time& stamp);
+
+/// Ellipses (2 sigma), ids and velocity arrows of the confirmed and
+/// coasting anchors; DELETEALL first so dropped anchors disappear.
+visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
+
+/// DCDT form: a Percept (sensor "map", robot = producer, frame = world)
+/// with one object per own track: name = id, class, attributes x, y, vx,
+/// vy (variability = sigma), cov_xy, last_seen_age, degree.
+mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
+/// The inverse, for a legacy teammate's anchors; objects that do not parse
+/// are skipped.
+std::vector<RemoteTrack> from_dcdt_percept(const mrt_msgs::Percept& p, const ConceptualModel& m);
+
+}  // namespace mrt::map::ros_conv

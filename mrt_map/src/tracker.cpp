@@ -1,0 +1,302 @@
+#include "mrt_map/tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "mrt_map/assignment.h"
+#include "mrt_map/kalman.h"
+
+namespace mrt::map {
+
+namespace {
+// Adopts a more specific class (a Robot seen as an Opponent).
+void refine_class(const ConceptualModel& m, Anchor& a, int c, double degree) {
+  if (c == a.class_index) {
+    a.degree = degree;
+  } else if (m.is_a(c, a.class_index)) {
+    a.class_index = c;
+    a.degree = degree;
+  }
+}
+
+double position_sigma_max(const Mat4& P) { return std::sqrt(principal_axes(P.topLeftCorner<2, 2>()).major); }
+}  // namespace
+
+Anchor& Tracker::create(double now, int class_index, double degree) {
+  Anchor a;
+  a.id = next_id_++;
+  a.class_index = class_index;
+  a.degree = degree;
+  a.first_seen = a.last_seen = now;
+  anchors_.push_back(std::move(a));
+  return anchors_.back();
+}
+
+void Tracker::cycle(double now, const std::vector<Observation>& observations,
+                    const std::vector<RemoteTrack>& remote) {
+  now_ = now;
+  for (Anchor& a : anchors_) {
+    const ClassDef& c = model_.at(a.class_index);
+    a.fused = predict(a.fused, c, now);
+    if (a.has_local) a.local = predict(a.local, c, now);
+    a.remote.clear();
+  }
+  seen_.clear();
+  coalesced_cycle_ = 0;
+  associate_local(now, observations);
+  associate_remote(now, remote);
+  fuse(now);
+  coalesce();
+  refine_teammates(now);
+  life_cycle(now);
+}
+
+void Tracker::coalesce() {
+  // Two anchors of compatible classes whose states (position and velocity)
+  // stay within the coalescence gate for coalesce_after seconds are one
+  // object (objects crossing are close only briefly): the older (lower id)
+  // keeps its symbol and takes the other's support.
+  const double gate = model_.tracker().coalesce_gate;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> still_close;
+  if (!(gate > 0.0)) return;
+  for (std::size_t i = 0; i < anchors_.size(); ++i) {
+    for (std::size_t j = i + 1; j < anchors_.size(); ++j) {
+      Anchor& a = anchors_[i];
+      Anchor& b = anchors_[j];
+      if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
+      if (!model_.compatible(a.class_index, b.class_index)) continue;
+      const Vec4 y = a.fused.x - b.fused.x;
+      // Cheap sufficient reject: the position part alone exceeds the gate.
+      if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
+        continue;
+      const Mat4 S = a.fused.P + b.fused.P;
+      if (y.dot(S.ldlt().solve(y)) > gate) continue;
+      const auto key = std::make_pair(std::min(a.id, b.id), std::max(a.id, b.id));
+      const auto since = close_since_.find(key);
+      const double t0 = since == close_since_.end() ? now_ : since->second;
+      if (now_ - t0 < model_.tracker().coalesce_after) {
+        still_close[key] = t0;
+        continue;
+      }
+      Anchor& keep = a.id < b.id ? a : b;
+      Anchor& gone = a.id < b.id ? b : a;
+      if (gone.has_local && (!keep.has_local || gone.local_last_seen > keep.local_last_seen)) {
+        keep.local = gone.local;
+        keep.has_local = true;
+        keep.local_hits = std::max(keep.local_hits, gone.local_hits);
+        keep.local_last_seen = gone.local_last_seen;
+      }
+      if (model_.is_a(gone.class_index, keep.class_index)) keep.class_index = gone.class_index;
+      keep.hits = std::max(keep.hits, gone.hits);
+      keep.last_seen = std::max(keep.last_seen, gone.last_seen);
+      keep.sources.insert(gone.sources.begin(), gone.sources.end());
+      for (const auto& [robot, id] : gone.remote_ids) keep.remote_ids.emplace(robot, id);
+      if (gone.status == AnchorStatus::kConfirmed) keep.status = AnchorStatus::kConfirmed;
+      else if (keep.status == AnchorStatus::kTentative) keep.status = gone.status;
+      if (seen_.count(gone.id)) seen_.insert(keep.id);
+      gone.status = AnchorStatus::kDropped;
+      ++coalesced_;
+      ++coalesced_cycle_;
+    }
+  }
+  close_since_ = std::move(still_close);
+}
+
+void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
+  const double gate = model_.tracker().gate;
+  const double radius = model_.tracker().maneuver_radius;
+  std::vector<std::vector<double>> cost(obs.size(), std::vector<double>(anchors_.size(), kInfeasible));
+  for (std::size_t r = 0; r < obs.size(); ++r)
+    for (std::size_t c = 0; c < anchors_.size(); ++c) {
+      if (!model_.compatible(obs[r].class_index, anchors_[c].class_index)) continue;
+      const bool far = (obs[r].z - anchors_[c].fused.x.head<2>()).norm() > radius;
+      if (far && outside_gate(anchors_[c].fused, obs[r].z, obs[r].R, gate)) continue;
+      const double d = mahalanobis2(anchors_[c].fused, obs[r].z, obs[r].R);
+      // Within the gate; or a confirmed anchor's manoeuvre (a kick), at the
+      // worst cost so that any gated pair wins.
+      if (d <= gate) cost[r][c] = d;
+      else if (anchors_[c].status != AnchorStatus::kTentative &&
+               (obs[r].z - anchors_[c].fused.x.head<2>()).norm() <= radius)
+        cost[r][c] = gate;
+    }
+  const std::vector<int> match = assign(cost, gate);
+  const std::size_t existing = anchors_.size();
+  for (std::size_t r = 0; r < obs.size(); ++r) {
+    const Observation& o = obs[r];
+    Anchor* a = nullptr;
+    if (match[r] >= 0 && static_cast<std::size_t>(match[r]) < existing) {
+      a = &anchors_[static_cast<std::size_t>(match[r])];
+      refine_class(model_, *a, o.class_index, o.degree);
+    } else {
+      bool gated = false;  // a second detection of an anchored object: no new symbol
+      for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
+      if (gated) continue;
+      a = &create(now, o.class_index, o.degree);
+    }
+    const ClassDef& c = model_.at(a->class_index);
+    if (!a->has_local) {
+      a->local = initialize(o, c);
+      a->local = predict(a->local, c, now);
+      a->has_local = true;
+      a->local_hits = 0;
+      if (a->hits == 0) a->fused = a->local;
+    } else {
+      if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
+        // Manoeuvre: forget the velocity, keep the symbol.
+        a->local.P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
+        a->local.P.block<2, 2>(0, 2).setZero();
+        a->local.P.block<2, 2>(2, 0).setZero();
+        a->local.P.topLeftCorner<2, 2>() += o.R;
+      }
+      update(a->local, o.z, o.R);
+    }
+    ++a->local_hits;
+    a->local_last_seen = a->last_seen = now;
+    a->sources.insert(o.sensors.begin(), o.sensors.end());
+    seen_.insert(a->id);
+  }
+}
+
+void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remote) {
+  const double gate = model_.team().gate;
+  const double radius = model_.tracker().maneuver_radius;
+  const double fresh = model_.tracker().coast_after;
+  std::map<std::string, std::vector<const RemoteTrack*>> by_robot;
+  for (const RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
+  for (const auto& [robot, tracks] : by_robot) {
+    const std::size_t existing = anchors_.size();
+    std::vector<std::vector<double>> cost(tracks.size(), std::vector<double>(existing, kInfeasible));
+    for (std::size_t r = 0; r < tracks.size(); ++r)
+      for (std::size_t c = 0; c < existing; ++c) {
+        const Anchor& a = anchors_[c];
+        if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
+        const Vec2 z = tracks[r]->estimate.x.head<2>();
+        if ((z - a.fused.x.head<2>()).norm() > radius &&
+            outside_gate(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>(), gate))
+          continue;
+        const double d = mahalanobis2(a.fused, tracks[r]->estimate.x.head<2>(),
+                                      tracks[r]->estimate.P.topLeftCorner<2, 2>());
+        const bool manoeuvre = a.status != AnchorStatus::kTentative &&
+                               (tracks[r]->estimate.x.head<2>() - a.fused.x.head<2>()).norm() <= radius;
+        if (d > gate && !manoeuvre) continue;
+        const auto link = a.remote_ids.find(robot);
+        const bool sticky = link != a.remote_ids.end() && link->second == tracks[r]->id;
+        cost[r][c] = sticky ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
+      }
+    const std::vector<int> match = assign(cost, gate);
+    for (std::size_t r = 0; r < tracks.size(); ++r) {
+      const RemoteTrack& t = *tracks[r];
+      const bool is_fresh = t.last_seen >= now - fresh;
+      Anchor* a = nullptr;
+      if (match[r] >= 0) {
+        a = &anchors_[static_cast<std::size_t>(match[r])];
+        refine_class(model_, *a, t.class_index, t.degree);
+      } else if (is_fresh) {
+        // A track inside another anchor's gate is the teammate's duplicate.
+        bool gated = false;
+        for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
+        if (gated) continue;
+        a = &create(now, t.class_index, t.degree);
+        a->fused = t.estimate;
+      } else {
+        continue;
+      }
+      a->remote[robot] = t;
+      a->remote_ids[robot] = t.id;
+      if (is_fresh) {
+        a->last_seen = std::max(a->last_seen, t.last_seen);
+        a->sources.insert(t.sensors.begin(), t.sensors.end());
+        seen_.insert(a->id);
+      }
+    }
+  }
+}
+
+void Tracker::fuse(double now) {
+  const bool ci = model_.team().covariance_intersection;
+  for (Anchor& a : anchors_) {
+    std::vector<const Estimate*> parts;
+    if (a.has_local) parts.push_back(&a.local);
+    for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
+    if (parts.empty()) continue;
+    Estimate f = *parts[0];
+    for (std::size_t i = 1; i < parts.size(); ++i)
+      f = ci ? covariance_intersection(f, *parts[i]) : fuse_estimates(f, *parts[i]);
+    f.stamp = now;
+    a.fused = f;
+  }
+}
+
+void Tracker::life_cycle(double now) {
+  const TrackerOptions& o = model_.tracker();
+  for (Anchor& a : anchors_) {
+    if (seen_.count(a.id)) {
+      ++a.hits;
+      if ((a.status == AnchorStatus::kTentative && a.hits >= o.confirm_hits) || a.status == AnchorStatus::kCoasting)
+        a.status = AnchorStatus::kConfirmed;
+    } else {
+      const double age = now - a.last_seen;
+      if (a.status == AnchorStatus::kTentative && age > o.tentative_timeout) a.status = AnchorStatus::kDropped;
+      else if (a.status == AnchorStatus::kConfirmed && age > o.coast_after) a.status = AnchorStatus::kCoasting;
+      if (a.status == AnchorStatus::kCoasting && age > o.drop_after) a.status = AnchorStatus::kDropped;
+      if (position_sigma_max(a.fused.P) > o.max_sigma) a.status = AnchorStatus::kDropped;
+    }
+    if (a.has_local && now - a.local_last_seen > o.drop_after) {
+      a.has_local = false;
+      a.local_hits = 0;
+    }
+  }
+  const auto before = anchors_.size();
+  anchors_.erase(std::remove_if(anchors_.begin(), anchors_.end(),
+                                [](const Anchor& a) { return a.status == AnchorStatus::kDropped; }),
+                 anchors_.end());
+  dropped_ += before - anchors_.size() - coalesced_cycle_;
+}
+
+void Tracker::set_teammate_pose(const std::string& robot, const Vec2& p, const Mat2& cov, double stamp) {
+  teammates_[robot] = {p, cov, stamp};
+}
+
+void Tracker::refine_teammates(double now) {
+  if (teammates_.empty()) return;
+  for (Anchor& a : anchors_) {
+    int target = -1;
+    for (int c = 0; c < model_.size(); ++c)
+      if (model_.at(c).refined_by_teammate_pose && c != a.class_index && model_.is_a(c, a.class_index)) target = c;
+    if (target < 0) continue;
+    for (const auto& [robot, t] : teammates_) {
+      if (now - t.stamp > model_.team().max_latency) continue;
+      if (mahalanobis2(a.fused, t.p, t.cov) <= model_.team().gate) {
+        a.class_index = target;
+        a.sources.insert(robot + "/pose");
+        break;
+      }
+    }
+  }
+}
+
+double Tracker::reliability(const Anchor& a, double now) const {
+  return a.degree * std::exp(-std::max(0.0, now - a.last_seen) / model_.tracker().reliability_tau);
+}
+
+std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
+  std::vector<RemoteTrack> out;
+  for (const Anchor& a : anchors_) {
+    if (!a.has_local || a.local_hits < model_.tracker().confirm_hits) continue;
+    if (a.status == AnchorStatus::kDropped || now_ - a.local_last_seen > model_.tracker().coast_after) continue;
+    RemoteTrack t;
+    t.robot = robot;
+    t.id = a.id;
+    t.class_index = a.class_index;
+    t.degree = a.degree;
+    t.estimate = a.local;
+    t.last_seen = a.local_last_seen;
+    for (const std::string& s : a.sources)
+      if (s.rfind(robot + "/", 0) == 0) t.sensors.insert(s);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace mrt::map

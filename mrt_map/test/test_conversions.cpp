@@ -1,0 +1,70 @@
+// The node's conversions: teammates' anchors through mrt_msgs/WorldModel and
+// through the DCDT form (mrt_msgs/Percept, what the DCDT bridge carries).
+#include <gtest/gtest.h>
+
+#include "ros/conversions.h"
+
+using namespace mrt::map;
+
+namespace {
+const char* kModel =
+    "classes:\n"
+    "  Ball: {motion: constant_velocity, accel_noise: 1, attributes: {color: {symbols: {orange: 1}}}}\n"
+    "tracker: {confirm_hits: 2}\n";
+
+PerceptObject ball(double x, double y) {
+  PerceptObject o;
+  o.membership_class = "Ball";
+  o.attributes["color"].symbol = "orange";
+  o.attributes["x"] = {x, "", 0.1, 1.0};
+  o.attributes["y"] = {y, "", 0.2, 1.0};
+  return o;
+}
+}  // namespace
+
+TEST(Conversions, OwnTracksRoundTrip) {
+  const ConceptualModel m = ConceptualModel::parse(kModel, "t.yaml");
+  WorldModel w(m, {"r1", 0.5});
+  RobotPose pose;
+  pose.x = 1.0;  // robot at (1, 0) facing +x: the ball at world (3, 1)
+  for (double t : {10.0, 10.1}) {
+    w.add_percept({ball(2, 1)}, pose, t, t, "cam");
+    w.update(t);
+  }
+  const auto own = w.local_tracks();
+  ASSERT_EQ(own.size(), 1u);
+  const ros::Time stamp(10.1);
+  // Through the team topic: every field back, full covariance.
+  const mrt_msgs::WorldModel msg = ros_conv::to_msg(w, "map", stamp, true);
+  ASSERT_EQ(msg.anchors.size(), 1u);
+  EXPECT_TRUE(msg.local_only);
+  EXPECT_EQ(msg.robot, "r1");
+  RemoteTrack back;
+  ASSERT_TRUE(ros_conv::from_msg(msg.anchors[0], m, stamp, back));
+  EXPECT_EQ(back.id, own[0].id);
+  EXPECT_NEAR(back.estimate.x(0), 3.0, 1e-12);
+  EXPECT_NEAR(back.estimate.x(1), 1.0, 1e-12);
+  EXPECT_TRUE(back.estimate.P.isApprox(own[0].estimate.P, 1e-12));
+  EXPECT_NEAR(back.last_seen, 10.1, 1e-6);
+  EXPECT_EQ(back.sensors, (std::set<std::string>{"r1/cam"}));
+  // A non-positive covariance or an unknown class is refused.
+  mrt_msgs::Anchor bad = msg.anchors[0];
+  bad.covariance[0] = -1.0;
+  EXPECT_FALSE(ros_conv::from_msg(bad, m, stamp, back));
+  bad = msg.anchors[0];
+  bad.membership_class = "Cat";
+  EXPECT_FALSE(ros_conv::from_msg(bad, m, stamp, back));
+  // Through the DCDT form: position, velocity, their variances and the x-y
+  // covariance survive (position-velocity correlations do not).
+  const mrt_msgs::Percept p = ros_conv::to_dcdt_percept(w, "map", stamp);
+  ASSERT_EQ(p.objects.size(), 1u);
+  EXPECT_EQ(p.sensor, "map");
+  const auto legacy = ros_conv::from_dcdt_percept(p, m);
+  ASSERT_EQ(legacy.size(), 1u);
+  EXPECT_EQ(legacy[0].robot, "r1");
+  EXPECT_EQ(legacy[0].id, own[0].id);
+  EXPECT_NEAR(legacy[0].estimate.x(0), 3.0, 1e-12);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(legacy[0].estimate.P(i, i), own[0].estimate.P(i, i), 1e-12);
+  EXPECT_NEAR(legacy[0].estimate.P(0, 1), own[0].estimate.P(0, 1), 1e-12);
+  EXPECT_NEAR(legacy[0].last_seen, 10.1, 1e-6);
+}
