@@ -99,12 +99,12 @@ class CameraRenderer {
   mrt::common::OmniCamera camera_;
   CameraOptions options_;
   // per pixel (row-major), in base_link: unit ray and floor point
-  std::vector<float> dx_, dy_, dz_, gx_, gy_, tfloor_;
+  std::vector<float> dx_, dy_, dz_, dxy_, gx_, gy_, tfloor_;  // dxy_: horizontal part of the ray
   std::vector<std::uint8_t> kind_;       // 0 outside the mirror, 1 own body, 2 floor, 3 above the horizon
   std::vector<float> depth_;             // per frame: ray length to the nearest hit
   cv::Mat floor_;                        // CV_8UC3 RGB, texture of the floor
   double floor_x0_ = 0.0, floor_y0_ = 0.0;
-  cv::Mat noise_;                        // CV_8SC1 pool of pixel noise
+  cv::Mat noise_pos_, noise_neg_;        // CV_8UC1 pool of pixel noise: positive and negative parts
   std::mt19937_64 rng_;
 };
 
