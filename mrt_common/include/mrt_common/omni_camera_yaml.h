@@ -41,7 +41,8 @@ inline MirrorProfile read_mirror_profile(const YamlReader& r, const YAML::Node& 
                                       num("theta_max"));
     if (type == "table") {
       std::vector<std::pair<double, double>> t;
-      for (const YAML::Node& s : r.sequence(r.required(m, "samples", "mirror"), "samples")) {
+      const YAML::Node samples = r.required(m, "samples", "mirror");  // named: sequence() returns its argument
+      for (const YAML::Node& s : r.sequence(samples, "samples")) {
         const auto v = r.numbers(s, "samples", 2);
         t.emplace_back(v[0], v[1]);
       }
