@@ -49,6 +49,16 @@ TEST(WorldCamera, MslFieldCameraFromTheWorldFileAndTheUrdf) {
   ASSERT_EQ(msl.robots[0].sensors.mice.size(), 2u);
   EXPECT_NEAR(msl.robots[0].sensors.mice[0].mount.y, 0.1, 1e-12);
   EXPECT_NEAR(msl.robots[0].sensors.mice[1].mount.y, -0.1, 1e-12);
+  // The sonars: sonar_0 .. sonar_7, 45 deg apart on the 0.25 m body; the
+  // third at (0, 0.25) facing left (the URDF writes 8 digits).
+  const auto& so = msl.robots[0].sensors.sonars;
+  ASSERT_EQ(so.size(), 8u);
+  EXPECT_NEAR(so[0].mount.x, 0.25, 1e-8);
+  EXPECT_NEAR(so[2].mount.x, 0.0, 1e-8);
+  EXPECT_NEAR(so[2].mount.y, 0.25, 1e-8);
+  EXPECT_NEAR(so[2].mount.theta, M_PI / 2, 1e-8);
+  EXPECT_NEAR(so[5].mount.x, -0.25 / std::sqrt(2.0), 1e-8);
+  EXPECT_NEAR(so[5].mount.y, -0.25 / std::sqrt(2.0), 1e-8);
 }
 
 TEST(WorldCamera, BlockWithoutUrdfAndOverrides) {
@@ -81,6 +91,14 @@ TEST(WorldCamera, ErrorsNameFileLineColumn) {
   EXPECT_EQ(error_of(kHead + "      camera_render: {noise: 2}\n"),
             "c.yaml:8:22: 'camera_render' needs a 'camera' section");
   EXPECT_EQ(error_of(kHead + kCamera + "      camera_render: {flicker: 1.5}\n").rfind("c.yaml:13:", 0), 0u);
+  // Sonars with neither count nor mounts and no URDF to take them from.
+  EXPECT_EQ(error_of(kHead + "      sonar: {rate: 10}\n"),
+            "c.yaml:8:14: missing required key 'count' or 'mounts' in 'sonar' (the base's URDF has no sonar_<i> "
+            "links)");
+  // A table mirror (samples [theta, radius px]).
+  const World t = parse_world(kHead + "      camera: {mirror: {type: table, samples: [[0, 0], [1.0, 100], [1.5, 200]]}}\n",
+                              "c.yaml", "");
+  EXPECT_NEAR(t.robots[0].sensors.camera.model.profile.radius(1.25), 150.0, 1e-9);
 }
 
 TEST(Description, LinkMountComposesFixedJoints) {
