@@ -111,7 +111,7 @@ cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback) {
       {"cyan", {0, 220, 255}},   {"magenta", {240, 0, 200}},  {"red", {220, 20, 20}},
       {"green", {0, 200, 60}},   {"white", {255, 255, 255}},  {"black", {0, 0, 0}},
       {"grey", {128, 128, 128}}, {"gray", {128, 128, 128}},   {"brown", {130, 80, 30}},
-      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}}};
+      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}},  {"beige", {190, 175, 150}}};
   const auto it = kColors.find(name);
   return it == kColors.end() ? fallback : it->second;
 }
@@ -192,7 +192,8 @@ void CameraRenderer::build_floor() {
   const int w = static_cast<int>(std::ceil((world_.max_x - world_.min_x) / res)) + 1;
   const int h = static_cast<int>(std::ceil((world_.max_y - world_.min_y) / res)) + 1;
   floor_.create(h, w, CV_8UC3);
-  floor_.setTo(cv::Scalar(options_.carpet[0], options_.carpet[1], options_.carpet[2]));
+  const cv::Vec3b f = world_.floor_color == "carpet" ? options_.carpet : color_rgb(world_.floor_color, options_.carpet);
+  floor_.setTo(cv::Scalar(f[0], f[1], f[2]));
   // Lines at their true width: cv::line with round caps joins the chords
   // of arcs; 16x sub-pixel precision for the end points.
   const int thick = std::max(1, static_cast<int>(std::lround(world_.line_width / res)));

@@ -39,7 +39,7 @@ class Loader : private mrt::common::YamlReader {
       fail(root, "expected a map at the top level");
     }
     map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
-                        "movers", "robots", "line_width"});
+                        "movers", "robots", "line_width", "floor_color"});
     World w;
     w.file = file();
     w.name = string(root, "name", "", true, "world");
@@ -52,6 +52,7 @@ class Loader : private mrt::common::YamlReader {
     if (const Node n = root["walls"])
       for (const Node& e : sequence(n, "walls")) w.walls.push_back(segment(e, "walls"));
     w.line_width = positive(root, "line_width", w.line_width);
+    w.floor_color = string(root, "floor_color", w.floor_color, false, "world");
     if (const Node n = root["field_lines"])
       for (const Node& e : sequence(n, "field_lines")) field_line(e, w.field_lines);
     if (const Node n = root["posts"])

@@ -97,6 +97,18 @@ TEST(Camera, OwnBodyIsBlackAtTheCentre) {
   EXPECT_EQ(at(img, 5, 5), cv::Vec3b(0, 0, 0));
 }
 
+TEST(Camera, FloorColourOfIndoorWorlds) {
+  World w = empty_world();
+  w.floor_color = "beige";
+  const OmniCamera cam = test_camera();
+  cv::Mat img;
+  CameraRenderer(w, cam).render(Pose2D(), {}, 0.0, img);
+  EXPECT_EQ(ground_pixel(img, cam, 2.0, 0.0), cv::Vec3b(190, 175, 150));
+  // Beyond the world's bounds (6 m): the `outside` grey, at 7 m behind
+  // (isometric part ends at 3 m: this is in the outer part of the mirror).
+  EXPECT_EQ(ground_pixel(img, cam, -7.0, 0.0), cv::Vec3b(90, 90, 90));
+}
+
 TEST(Camera, WallOccludesPost) {
   World w = empty_world();
   w.posts.push_back({"p", "Landmark", "yellow", {3.0, 0.0}, 0.1});
