@@ -187,6 +187,14 @@ TEST(Camera, EffectsNoiseFlickerAndDeterminism) {
   f.effects.flicker_period = 4.0;
   CameraRenderer(w, cam, f).render(Pose2D(), {}, 1.0, c);
   EXPECT_EQ(at(c, 320, 340), cv::Vec3b(36, 168, 48));
+  // White-balance drift 20 %, period 12 s, channels a third of a period
+  // apart: at t = 3 s the gains are 1 + 0.2 sin(pi/2 + k 2pi/3) = 1.2, 0.9,
+  // 0.9, so the carpet (30, 140, 40) becomes (36, 126, 36).
+  CameraOptions wb;
+  wb.effects.white_balance_drift = 0.2;
+  wb.effects.white_balance_period = 12.0;
+  CameraRenderer(w, cam, wb).render(Pose2D(), {}, 3.0, c);
+  EXPECT_EQ(at(c, 320, 340), cv::Vec3b(36, 126, 36));
 }
 
 TEST(Camera, BlurAtSpeedSmearsAlongTheMotion) {
