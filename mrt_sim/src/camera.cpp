@@ -72,7 +72,7 @@ double hit_cylinder(const Ray& r, const Shape& s, bool& top) {
     const double qx = px + t * r.dx, qy = py + t * r.dy;
     if (t > 0.0 && t < best && qx * qx + qy * qy <= s.r * s.r) {
       best = t;
-      top = true;
+      top = s.band <= 0.0;  // a robot's top is its black body, its marker a band around the side
     }
   }
   return best;

@@ -50,7 +50,7 @@ struct CameraOptions {
   double goal_post_radius = 0.0625;     // m (MSL posts are 12.5 cm thick)
   double post_height = 1.0;             // m, landmarks, obstacles and other posts
   double robot_height = 0.6;            // m, other robots (black body)
-  double marker_band = 0.15;            // m, coloured band at the top of a robot (and its top)
+  double marker_band = 0.15;            // m, coloured band around the top of a robot's side
   double person_height = 1.7;           // m, movers of class Person
 
   cv::Vec3b carpet{30, 140, 40};        // green
