@@ -72,7 +72,7 @@ double hit_cylinder(const Ray& r, const Shape& s, bool& top) {
     const double qx = px + t * r.dx, qy = py + t * r.dy;
     if (t > 0.0 && t < best && qx * qx + qy * qy <= s.r * s.r) {
       best = t;
-      top = true;
+      top = s.band <= 0.0;  // a robot's top is its black body, its marker a band around the side
     }
   }
   return best;
@@ -111,7 +111,7 @@ cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback) {
       {"cyan", {0, 220, 255}},   {"magenta", {240, 0, 200}},  {"red", {220, 20, 20}},
       {"green", {0, 200, 60}},   {"white", {255, 255, 255}},  {"black", {0, 0, 0}},
       {"grey", {128, 128, 128}}, {"gray", {128, 128, 128}},   {"brown", {130, 80, 30}},
-      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}}};
+      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}},  {"beige", {190, 175, 150}}};
   const auto it = kColors.find(name);
   return it == kColors.end() ? fallback : it->second;
 }
@@ -132,16 +132,21 @@ CameraRenderer::CameraRenderer(const World& world, const mrt::common::OmniCamera
   build_rays();
   build_floor();
   if (options_.effects.noise > 0.0) {
-    noise_.create(camera_.height_px + 32, camera_.width * 3 + 32, CV_32F);
+    // A pool of Gaussian noise, split into its positive and negative parts
+    // so a frame adds one and subtracts the other with saturating SIMD
+    // arithmetic (exact: only one of them is non-zero at each element).
+    cv::Mat n(camera_.height_px + 32, (camera_.width + 32) * 3, CV_32F);
     cv::RNG rng(options_.seed * 7919 + 17);
-    rng.fill(noise_, cv::RNG::NORMAL, 0.0, options_.effects.noise);
-    noise_.convertTo(noise_, CV_8S);  // saturates to [-128, 127]
+    rng.fill(n, cv::RNG::NORMAL, 0.0, options_.effects.noise);
+    cv::Mat pos = cv::max(n, 0.0), neg = cv::max(-n, 0.0);
+    pos.convertTo(noise_pos_, CV_8U);  // rounds and saturates
+    neg.convertTo(noise_neg_, CV_8U);
   }
 }
 
 void CameraRenderer::build_rays() {
   const int n = camera_.width * camera_.height_px;
-  dx_.assign(n, 0.f), dy_.assign(n, 0.f), dz_.assign(n, 0.f);
+  dx_.assign(n, 0.f), dy_.assign(n, 0.f), dz_.assign(n, 0.f), dxy_.assign(n, 0.f);
   gx_.assign(n, 0.f), gy_.assign(n, 0.f), tfloor_.assign(n, kInf);
   kind_.assign(n, kOutside);
   depth_.assign(n, kInf);
@@ -154,6 +159,7 @@ void CameraRenderer::build_rays() {
       Eigen::Vector3d d;
       if (!camera_.ray(u, v, d)) continue;  // pixel (u, v) is the ray of the integer coordinates (OpenCV)
       dx_[i] = static_cast<float>(d.x()), dy_[i] = static_cast<float>(d.y()), dz_[i] = static_cast<float>(d.z());
+      dxy_[i] = static_cast<float>(std::hypot(d.x(), d.y()));
       if (d.z() < -1e-9) {
         const double tb = (hb - h) / d.z();  // the own body's top
         const double bx = options_.mount_x + tb * d.x(), by = options_.mount_y + tb * d.y();
@@ -186,7 +192,8 @@ void CameraRenderer::build_floor() {
   const int w = static_cast<int>(std::ceil((world_.max_x - world_.min_x) / res)) + 1;
   const int h = static_cast<int>(std::ceil((world_.max_y - world_.min_y) / res)) + 1;
   floor_.create(h, w, CV_8UC3);
-  floor_.setTo(cv::Scalar(options_.carpet[0], options_.carpet[1], options_.carpet[2]));
+  const cv::Vec3b f = world_.floor_color == "carpet" ? options_.carpet : color_rgb(world_.floor_color, options_.carpet);
+  floor_.setTo(cv::Scalar(f[0], f[1], f[2]));
   // Lines at their true width: cv::line with round caps joins the chords
   // of arcs; 16x sub-pixel precision for the end points.
   const int thick = std::max(1, static_cast<int>(std::lround(world_.line_width / res)));
@@ -385,11 +392,19 @@ void CameraRenderer::draw_shape(const Pose2D& robot, const Shape& sh, cv::Mat& r
   int u0, u1, v0, v1;
   if (!box.range(u0, u1, v0, v1)) return;
   Ray ray{robot.x + c * mx - s * my, robot.y + s * mx + c * my, h, 0, 0, 0};
+  // A pixel whose nearest hit so far is closer (horizontally) than the
+  // whole shape cannot see it: skip it without the intersection.
+  double reach = 0.0;
+  if (sh.type == Shape::kWall)
+    reach = distance_to_segment({ray.ox, ray.oy}, Segment{{sh.ax, sh.ay}, {sh.bx, sh.by}});
+  else
+    reach = std::max(0.0, std::hypot(ray.ox - sh.x, ray.oy - sh.y) - sh.r);
+  const float min_reach = static_cast<float>(reach - 1e-6);
   for (int v = v0; v <= v1; ++v) {
     cv::Vec3b* out = rgb.ptr<cv::Vec3b>(v);
     for (int u = u0; u <= u1; ++u) {
       const int i = v * camera_.width + u;
-      if (kind_[i] < kFloor) continue;
+      if (kind_[i] < kFloor || depth_[i] * dxy_[i] < min_reach) continue;
       ray.dx = c * dx_[i] - s * dy_[i], ray.dy = s * dx_[i] + c * dy_[i], ray.dz = dz_[i];
       bool top = false;
       double shade = 1.0, t = kInf;
@@ -437,15 +452,13 @@ void CameraRenderer::apply_effects(double time, const Twist2D& velocity, cv::Mat
     }
     cv::LUT(rgb, lut, rgb);
   }
-  if (!noise_.empty()) {
+  if (!noise_pos_.empty()) {
     std::uniform_int_distribution<int> off(0, 31);
-    const int ou = off(rng_), ov = off(rng_);
-    const int n = camera_.width * 3;
-    for (int v = 0; v < camera_.height_px; ++v) {
-      uchar* out = rgb.ptr<uchar>(v);
-      const schar* z = noise_.ptr<schar>(v + ov) + ou;
-      for (int k = 0; k < n; ++k) out[k] = cv::saturate_cast<uchar>(out[k] + z[k]);
-    }
+    const int ou = off(rng_) * 3, ov = off(rng_);
+    const cv::Rect roi(ou, ov, camera_.width * 3, camera_.height_px);
+    cv::Mat flat = rgb.reshape(1);
+    cv::add(flat, noise_pos_(roi), flat);
+    cv::subtract(flat, noise_neg_(roi), flat);
   }
 }
 

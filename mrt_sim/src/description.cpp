@@ -62,6 +62,11 @@ std::optional<DescriptionMounts> read_description(const std::string& dir, const 
   d.omni_mirror = mount_in(*model, "omni_mirror");
   d.mouse_left = mount_in(*model, "mouse_left");
   d.mouse_right = mount_in(*model, "mouse_right");
+  for (int i = 0; i < 360; ++i) {
+    const auto m = mount_in(*model, "sonar_" + std::to_string(i));
+    if (!m) break;
+    d.sonars.push_back(*m);
+  }
   return d;
 }
 

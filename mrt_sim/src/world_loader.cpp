@@ -39,7 +39,7 @@ class Loader : private mrt::common::YamlReader {
       fail(root, "expected a map at the top level");
     }
     map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
-                        "movers", "robots", "line_width"});
+                        "movers", "robots", "line_width", "floor_color"});
     World w;
     w.file = file();
     w.name = string(root, "name", "", true, "world");
@@ -52,6 +52,7 @@ class Loader : private mrt::common::YamlReader {
     if (const Node n = root["walls"])
       for (const Node& e : sequence(n, "walls")) w.walls.push_back(segment(e, "walls"));
     w.line_width = positive(root, "line_width", w.line_width);
+    w.floor_color = string(root, "floor_color", w.floor_color, false, "world");
     if (const Node n = root["field_lines"])
       for (const Node& e : sequence(n, "field_lines")) field_line(e, w.field_lines);
     if (const Node n = root["posts"])
@@ -216,7 +217,7 @@ class Loader : private mrt::common::YamlReader {
     map(n, "sensors", {"mice", "encoders", "sonar", "vision", "dgps", "camera", "camera_render"});
     if (const Node m = n["mice"]) mice(m, s, d);
     if (const Node e = n["encoders"]) encoders(e, s);
-    if (const Node so = n["sonar"]) sonar(so, base, s);
+    if (const Node so = n["sonar"]) sonar(so, base, d, s);
     if (const Node v = n["vision"]) vision(v, s);
     if (const Node g = n["dgps"]) dgps(g, s);
     if (const Node c = n["camera"]) camera(c, n["camera_render"], s, d);
@@ -325,7 +326,10 @@ class Loader : private mrt::common::YamlReader {
     }
   }
 
-  void sonar(const Node& n, const BaseConfig& base, SensorsConfig& s) const {
+  // Sonars at `count` positions around the body, at `mounts`, or, with
+  // neither, at the URDF's sonar_<i> links.
+  void sonar(const Node& n, const BaseConfig& base, const std::optional<DescriptionMounts>& d,
+             SensorsConfig& s) const {
     map(n, "sonar", {"rate", "noise", "count", "mounts", "fov", "min_range", "max_range"});
     s.rate_sonar = non_negative(n, "rate", 10.0);
     s.sonar_noise = non_negative(n, "noise", s.sonar_noise);
@@ -348,8 +352,13 @@ class Loader : private mrt::common::YamlReader {
         c.mount = mount(e, "mounts", Pose2D());
         s.sonars.push_back(c);
       }
+    } else if (d && !d->sonars.empty()) {
+      for (const LinkMount& m : d->sonars) {
+        c.mount = Pose2D(m.position.x(), m.position.y(), m.yaw);
+        s.sonars.push_back(c);
+      }
     } else {
-      fail(n, "missing required key 'count' or 'mounts' in 'sonar'");
+      fail(n, "missing required key 'count' or 'mounts' in 'sonar' (the base's URDF has no sonar_<i> links)");
     }
   }
 

@@ -97,6 +97,18 @@ TEST(Camera, OwnBodyIsBlackAtTheCentre) {
   EXPECT_EQ(at(img, 5, 5), cv::Vec3b(0, 0, 0));
 }
 
+TEST(Camera, FloorColourOfIndoorWorlds) {
+  World w = empty_world();
+  w.floor_color = "beige";
+  const OmniCamera cam = test_camera();
+  cv::Mat img;
+  CameraRenderer(w, cam).render(Pose2D(), {}, 0.0, img);
+  EXPECT_EQ(ground_pixel(img, cam, 2.0, 0.0), cv::Vec3b(190, 175, 150));
+  // Beyond the world's bounds (6 m): the `outside` grey, at 7 m behind
+  // (isometric part ends at 3 m: this is in the outer part of the mirror).
+  EXPECT_EQ(ground_pixel(img, cam, -7.0, 0.0), cv::Vec3b(90, 90, 90));
+}
+
 TEST(Camera, WallOccludesPost) {
   World w = empty_world();
   w.posts.push_back({"p", "Landmark", "yellow", {3.0, 0.0}, 0.1});
@@ -142,6 +154,19 @@ TEST(Camera, OtherRobotBlackWithMarkerAndLineWidth) {
   EXPECT_EQ(at(img, u, v), cv::Vec3b(0, 220, 255));
   ASSERT_TRUE(cam.project(Eigen::Vector3d(0.0, 1.25, 0.2 - 0.6), u, v));
   EXPECT_EQ(at(img, u, v), cv::Vec3b(0, 0, 0));
+  // A 0.5 m robot 0.8 m ahead (its top is visible from 0.6 m): the top's
+  // centre (0.8, 0, 0.5) is black body, its near side at 0.4 m in the band
+  // (0.35 .. 0.5) magenta (that ray is at x = 0.275 when at the top's
+  // height, short of the top's edge at 0.55).
+  CameraOptions low;
+  low.robot_height = 0.5;
+  CameraRenderer(w, cam, low).render(Pose2D(0, 0, 0), {{"opp", {0.8, 0.0}, 0.25, "magenta"}}, 0.0, img);
+  ASSERT_TRUE(cam.project(Eigen::Vector3d(0.8, 0.0, 0.5 - 0.6), u, v));
+  EXPECT_EQ(at(img, u, v), cv::Vec3b(0, 0, 0));
+  ASSERT_TRUE(cam.project(Eigen::Vector3d(0.55, 0.0, 0.4 - 0.6), u, v));
+  EXPECT_EQ(at(img, u, v), cv::Vec3b(240, 0, 200));
+  img = cv::Mat();
+  r.render(Pose2D(0, 0, 0), {{"mate", {0.0, 1.5}, 0.25, "cyan"}}, 0.0, img);
   // The line x = 1.5 is 12.5 cm wide: white at 1.5 and 1.55, green at 1.6
   // (radius 75, 77.5, 80 px ahead).
   EXPECT_EQ(ground_pixel(img, cam, 1.5, 0.0), cv::Vec3b(255, 255, 255));
@@ -175,6 +200,14 @@ TEST(Camera, EffectsNoiseFlickerAndDeterminism) {
   f.effects.flicker_period = 4.0;
   CameraRenderer(w, cam, f).render(Pose2D(), {}, 1.0, c);
   EXPECT_EQ(at(c, 320, 340), cv::Vec3b(36, 168, 48));
+  // White-balance drift 20 %, period 12 s, channels a third of a period
+  // apart: at t = 3 s the gains are 1 + 0.2 sin(pi/2 + k 2pi/3) = 1.2, 0.9,
+  // 0.9, so the carpet (30, 140, 40) becomes (36, 126, 36).
+  CameraOptions wb;
+  wb.effects.white_balance_drift = 0.2;
+  wb.effects.white_balance_period = 12.0;
+  CameraRenderer(w, cam, wb).render(Pose2D(), {}, 3.0, c);
+  EXPECT_EQ(at(c, 320, 340), cv::Vec3b(36, 126, 36));
 }
 
 TEST(Camera, BlurAtSpeedSmearsAlongTheMotion) {

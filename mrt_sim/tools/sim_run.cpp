@@ -10,7 +10,11 @@
 #include "mrt_common/csv.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common/cli.h"
+#include "mrt_sim/camera.h"
 #include "mrt_sim/simulator.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace {
 
@@ -22,7 +26,7 @@ int error(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string world_path, robot, out_path, mice_path;
+  std::string world_path, robot, out_path, mice_path, camera_path;
   std::vector<double> twist{0, 0, 0};
   double duration = -1.0, dt = 0.001;
   CLI::App app{
@@ -37,6 +41,7 @@ int main(int argc, char** argv) {
       ->required()->check(CLI::NonNegativeNumber);
   app.add_option("--out", out_path, "ground-truth CSV to write: t,x,y,theta (s, m, m, rad)")->required();
   app.add_option("--mice", mice_path, "mice CSV to write: t,left_dx,left_dy,right_dx,right_dy (s, counts)");
+  app.add_option("--camera", camera_path, "image file (PNG, ...) to write the robot's camera frame to at the end");
   app.add_option("--dt", dt, "simulation step (s, > 0), default 0.001")->check(CLI::PositiveNumber);
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
 
@@ -79,6 +84,19 @@ int main(int argc, char** argv) {
     if (mice && r.mice_ready)
       mice->row({sim->time(), double(r.mice.left_dx), double(r.mice.left_dy), double(r.mice.right_dx),
                  double(r.mice.right_dy)});
+  }
+  if (!camera_path.empty()) {
+    if (r.config.sensors.camera.rate <= 0.0) return error("robot '" + r.config.name + "' has no camera");
+    mrt::sim::CameraRenderer cam(sim->world(), r.config.sensors.camera.model,
+                                 mrt::sim::camera_options(r.config, sim->world().seed));
+    cv::Mat rgb, bgr;
+    cam.render(r.pose, sim->other_robots(index), sim->time(), rgb, r.twist);
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    try {
+      if (!cv::imwrite(camera_path, bgr)) return error("cannot write '" + camera_path + "'");
+    } catch (const cv::Exception& e) {
+      return error("cannot write '" + camera_path + "': " + e.what());
+    }
   }
   return 0;
 }

@@ -32,7 +32,7 @@ struct CameraShape;  // one object to draw (src/camera.cpp)
 
 /// RGB of a symbolic colour of the world file (`orange`, `yellow`, `blue`,
 /// `cyan`, `magenta`, `red`, `green`, `white`, `black`, `grey`/`gray`,
-/// `brown`, `purple`, `pink`); `fallback` for "" or an unknown name.
+/// `brown`, `purple`, `pink`, `beige`); `fallback` for "" or an unknown name.
 cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback = cv::Vec3b(128, 128, 128));
 
 /// The colours and sizes the renderer draws with (RGB). The defaults are
@@ -50,7 +50,7 @@ struct CameraOptions {
   double goal_post_radius = 0.0625;     // m (MSL posts are 12.5 cm thick)
   double post_height = 1.0;             // m, landmarks, obstacles and other posts
   double robot_height = 0.6;            // m, other robots (black body)
-  double marker_band = 0.15;            // m, coloured band at the top of a robot (and its top)
+  double marker_band = 0.15;            // m, coloured band around the top of a robot's side
   double person_height = 1.7;           // m, movers of class Person
 
   cv::Vec3b carpet{30, 140, 40};        // green
@@ -99,12 +99,12 @@ class CameraRenderer {
   mrt::common::OmniCamera camera_;
   CameraOptions options_;
   // per pixel (row-major), in base_link: unit ray and floor point
-  std::vector<float> dx_, dy_, dz_, gx_, gy_, tfloor_;
+  std::vector<float> dx_, dy_, dz_, dxy_, gx_, gy_, tfloor_;  // dxy_: horizontal part of the ray
   std::vector<std::uint8_t> kind_;       // 0 outside the mirror, 1 own body, 2 floor, 3 above the horizon
   std::vector<float> depth_;             // per frame: ray length to the nearest hit
   cv::Mat floor_;                        // CV_8UC3 RGB, texture of the floor
   double floor_x0_ = 0.0, floor_y0_ = 0.0;
-  cv::Mat noise_;                        // CV_8SC1 pool of pixel noise
+  cv::Mat noise_pos_, noise_neg_;        // CV_8UC1 pool of pixel noise: positive and negative parts
   std::mt19937_64 rng_;
 };
 

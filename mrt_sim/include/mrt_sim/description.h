@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -23,6 +24,7 @@ struct LinkMount {
 struct DescriptionMounts {
   std::optional<LinkMount> omni_mirror;  // the mirror's effective viewpoint
   std::optional<LinkMount> mouse_left, mouse_right;
+  std::vector<LinkMount> sonars;  // links sonar_0, sonar_1, ... up to the first missing one
 };
 
 /// Directory of mrt_description's URDF files as built into this library

@@ -154,6 +154,7 @@ struct World {
   std::vector<Segment> walls;
   std::vector<Segment> field_lines;
   double line_width = 0.125;            // m, painted width of the field lines (MSL: 12.5 cm)
+  std::string floor_color = "carpet";   // the camera's floor: "carpet" (green) or a colour name
   std::vector<Post> posts;
   std::vector<Goal> goals;
   Ball ball;
