@@ -41,6 +41,8 @@ class Tracker {
   /// estimates only (so a teammate never gets its own data back).
   std::vector<RemoteTrack> local_tracks(const std::string& robot) const;
   std::uint64_t dropped_count() const { return dropped_; }
+  /// Time of the last cycle.
+  double now() const { return now_; }
   /// Anchors joined into an older one (two symbols for one object).
   std::uint64_t coalesced_count() const { return coalesced_; }
 
@@ -52,6 +54,9 @@ class Tracker {
   void life_cycle(double now);
   void refine_teammates(double now);
   Anchor& create(double now, int class_index, double degree);
+  /// The coasting anchor (not supported this cycle, compatible class) nearest
+  /// to z within tracker.reid_gate (squared Mahalanobis), or null.
+  Anchor* reidentify(int class_index, const Vec2& z, const Mat2& R);
 
   const ConceptualModel& model_;
   Merger merger_;
