@@ -32,6 +32,7 @@ struct BallDiag {
 
   std::vector<double> errors;
   ErrorBin local_fresh, fused_when_local_fresh;  // the robot sees it itself this step
+  ErrorBin fused_from_teammates;                 // it does not: its teammates' anchors only
   void error(double e, double since_kick, double nearest, int observers) {
     errors.push_back(e);
     (since_kick < 0.5 ? just_kicked : rolling).add(e);
@@ -45,8 +46,10 @@ struct BallDiag {
     auto q = [&](double f) { return errors.empty() ? NAN : errors[static_cast<std::size_t>(f * static_cast<double>(errors.size() - 1))]; };
     std::printf("diag_ball_error_p50_p90_p99: %.4f %.4f %.4f m\n", q(0.5), q(0.9), q(0.99));
     std::printf("diag_ball_squared_error_share_above_20cm: %.1f %%\n", all > 0 ? 100.0 * big / all : NAN);
-    std::printf("diag_ball_rmse_own_filter_when_seeing: %.4f m (fused %.4f m, %ld samples)\n", local_fresh.rmse(),
-                fused_when_local_fresh.rmse(), local_fresh.n);
+    std::printf("map_ball_rmse_team_robot_sees_it_within_5m: %.4f m (own filter %.4f m, %ld samples)\n",
+                fused_when_local_fresh.rmse(), local_fresh.rmse(), local_fresh.n);
+    std::printf("map_ball_rmse_team_from_teammates_only_within_5m: %.4f m (%ld samples)\n",
+                fused_from_teammates.rmse(), fused_from_teammates.n);
     std::printf("diag_ball_rmse_just_kicked: %.4f m (%ld samples)\n", just_kicked.rmse(), just_kicked.n);
     std::printf("diag_ball_rmse_rolling: %.4f m (%ld samples)\n", rolling.rmse(), rolling.n);
     const char* d[] = {"0_2m", "2_4m", "4_5m"};
@@ -70,10 +73,25 @@ struct SwitchDiag {
   long at_reacquisition = 0;  // the opponent had no anchor within 0.5 m the step before
   long while_tracked = 0;     // it had one (a swap: crossing, or a duplicate taking over)
   long unmatched_steps = 0, matched_steps = 0;
+  // Episodes in which an opponent is in no robot's view (range, occlusion)
+  // for longer than 1 s: indistinguishable opponents, so each is a chance
+  // for a re-identification to pick the wrong one.
+  std::vector<double> unseen_for;
+  long unseen_episodes = 0;
+  void visibility(std::size_t o, bool in_view, double dt) {
+    if (unseen_for.size() <= o) unseen_for.resize(o + 1, 0.0);
+    if (in_view) {
+      unseen_episodes += unseen_for[o] > 1.0;
+      unseen_for[o] = 0.0;
+    } else {
+      unseen_for[o] += dt;
+    }
+  }
   void print(std::size_t opponents, double minutes) const {
     const double k = 1.0 / static_cast<double>(opponents) / (minutes / 10.0);
     std::printf("diag_id_switches_at_reacquisition_per_opp_10min: %.2f count\n", k * static_cast<double>(at_reacquisition));
     std::printf("diag_id_switches_while_tracked_per_opp_10min: %.2f count\n", k * static_cast<double>(while_tracked));
+    std::printf("diag_opponent_unseen_by_all_over_1s_per_opp_10min: %.2f count\n", k * static_cast<double>(unseen_episodes));
     std::printf("diag_opponent_tracked: %.2f %% of steps\n",
                 100.0 * static_cast<double>(matched_steps) / static_cast<double>(matched_steps + unmatched_steps));
   }

@@ -78,6 +78,8 @@ void score_ball(const WorldModel& w, int ball_class, double now, const BallTruth
   if (a && t.near && a->has_local && a->local_last_seen >= now) {
     diag->local_fresh.add((a->local.x.head<2>() - t.p).norm());
     diag->fused_when_local_fresh.add(e);
+  } else if (a && t.near) {
+    diag->fused_from_teammates.add(e);
   }
 }
 
@@ -139,6 +141,7 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
         for (const Anchor& a : w.tracker().anchors()) if (static_cast<long>(a.id) == last_id[o]) old = &a;
         std::printf("switch opp %zu: %ld -> %u (new age %.2f s, %s)", o, last_id[o], best->id,
                     w.tracker().now() - best->first_seen, matched_before ? "tracked" : "reacq");
+        std::printf(" new: local=%d remotes=%zu", best->has_local, best->remote.size());
         if (old)
           std::printf(" old %s d=%.2f m sigma=%.2f unseen %.2f s", to_string(old->status),
                       (old->fused.x.head<2>() - sim.opponents()[o].p).norm(), std::sqrt(old->fused.P(0, 0)),
@@ -210,6 +213,11 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
     }
     if (t >= next_team) next_team += kTeamPeriod;
     count_anchors(*team[0], *alone[0], ball_class, opp_class, counts);
+    for (int o = 0; o < static_cast<int>(sim.opponents().size()); ++o) {
+      bool in_view = false;
+      for (int i = 0; i < n && !in_view; ++i) in_view = sim.opponent_in_view(i, o, cam);
+      switch_diag.visibility(static_cast<std::size_t>(o), in_view, kDt);
+    }
     switches += identity_switches(*team[0], opp_class, sim, last_id, was_matched, switch_diag);
   }
   Stats team_all;

@@ -88,6 +88,12 @@ bool TeamSim::ball_in_view(int i, const CameraModel& cam) const {
   return (ball_.p - me).norm() <= cam.range && !occluded(me, ball_.p, i, -1);
 }
 
+bool TeamSim::opponent_in_view(int i, int k, const CameraModel& cam) const {
+  const Vec2& me = mates_[static_cast<std::size_t>(i)].p;
+  const Vec2& o = opps_[static_cast<std::size_t>(k)].p;
+  return (o - me).norm() <= cam.range && !occluded(me, o, i, k);
+}
+
 std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose& believed) {
   std::normal_distribution<double> n(0.0, 1.0);
   std::uniform_real_distribution<double> u(0.0, 1.0);

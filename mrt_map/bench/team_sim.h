@@ -45,6 +45,8 @@ class TeamSim {
   /// True when robot i's camera could see the ball now (range, occlusion;
   /// detection misses aside): the ground truth of "the ball is visible".
   bool ball_in_view(int i, const CameraModel& cam) const;
+  /// True when robot i's camera could see opponent k now (range, occlusion).
+  bool opponent_in_view(int i, int k, const CameraModel& cam) const;
   /// Time since the ball was last kicked (s).
   double since_kick() const { return since_kick_; }
 

@@ -33,8 +33,7 @@ Anchor& Tracker::create(double now, int class_index, double degree) {
   return anchors_.back();
 }
 
-void Tracker::cycle(double now, const std::vector<Observation>& observations,
-                    const std::vector<RemoteTrack>& remote) {
+void Tracker::cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote) {
   now_ = now;
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
@@ -174,12 +173,12 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
   }
 }
 
-void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remote) {
+void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
   const double gate = model_.team().gate;
   const double radius = model_.tracker().maneuver_radius;
   const double fresh = model_.tracker().coast_after;
-  std::map<std::string, std::vector<const RemoteTrack*>> by_robot;
-  for (const RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
+  std::map<std::string, std::vector<RemoteTrack*>> by_robot;
+  for (RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
   for (const auto& [robot, tracks] : by_robot) {
     const std::size_t existing = anchors_.size();
     std::vector<std::vector<double>> cost(tracks.size(), std::vector<double>(existing, kInfeasible));
@@ -202,7 +201,7 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
       }
     const std::vector<int> match = assign(cost, gate);
     for (std::size_t r = 0; r < tracks.size(); ++r) {
-      const RemoteTrack& t = *tracks[r];
+      RemoteTrack& t = *tracks[r];
       const bool is_fresh = t.last_seen >= now - fresh;
       Anchor* a = nullptr;
       if (match[r] >= 0) {
@@ -223,13 +222,13 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
       } else {
         continue;
       }
-      a->remote[robot] = t;
       a->remote_ids[robot] = t.id;
       if (is_fresh) {
         a->last_seen = std::max(a->last_seen, t.last_seen);
         a->sources.insert(t.sensors.begin(), t.sensors.end());
         seen_.insert(a->id);
       }
+      a->remote[robot] = std::move(t);  // t's last use
     }
   }
 }

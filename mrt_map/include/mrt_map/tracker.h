@@ -26,7 +26,8 @@ class Tracker {
   /// One cycle at time `now`: predict, associate and update with the own
   /// (already merged) observations, link and fuse the teammates' anchors
   /// (already latency-compensated to `now`), advance the life cycle.
-  void cycle(double now, const std::vector<Observation>& observations, const std::vector<RemoteTrack>& remote);
+  /// (`remote` by value: the caller moves its compensated tracks in.)
+  void cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote);
 
   /// A teammate's reported pose (world frame): Robot anchors it explains
   /// (Mahalanobis within team.gate) become the class refined_by teammate_pose.
@@ -48,7 +49,7 @@ class Tracker {
 
  private:
   void associate_local(double now, const std::vector<Observation>& obs);
-  void associate_remote(double now, const std::vector<RemoteTrack>& remote);
+  void associate_remote(double now, std::vector<RemoteTrack>& remote);
   void fuse(double now);
   void coalesce();
   void life_cycle(double now);
