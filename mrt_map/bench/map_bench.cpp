@@ -10,6 +10,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "mrt_map/world_model.h"
 #include "bench_diag.h"
@@ -163,6 +164,21 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
   return switches;
 }
 
+// The team's pooled figures and the best single robot's.
+std::tuple<Stats, double, double> summarise(const std::vector<Stats>& team_stats, const std::vector<Stats>& alone_stats) {
+  Stats team_all;
+  double best_alone_rmse = INFINITY, best_alone_avail = 0.0;
+  for (std::size_t i = 0; i < team_stats.size(); ++i) {
+    team_all.se += team_stats[i].se;
+    team_all.n_err += team_stats[i].n_err;
+    team_all.known += team_stats[i].known;
+    team_all.steps += team_stats[i].steps;
+    best_alone_rmse = std::min(best_alone_rmse, alone_stats[i].rmse());
+    best_alone_avail = std::max(best_alone_avail, alone_stats[i].availability());
+  }
+  return {team_all, best_alone_rmse, best_alone_avail};
+}
+
 void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   TeamSim sim(seed);
   const bench::CameraModel cam;
@@ -220,16 +236,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
     }
     switches += identity_switches(*team[0], opp_class, sim, last_id, was_matched, switch_diag);
   }
-  Stats team_all;
-  double best_alone_rmse = INFINITY, best_alone_avail = 0.0;
-  for (int i = 0; i < n; ++i) {
-    team_all.se += team_stats[i].se;
-    team_all.n_err += team_stats[i].n_err;
-    team_all.known += team_stats[i].known;
-    team_all.steps += team_stats[i].steps;
-    best_alone_rmse = std::min(best_alone_rmse, alone_stats[i].rmse());
-    best_alone_avail = std::max(best_alone_avail, alone_stats[i].availability());
-  }
+  const auto [team_all, best_alone_rmse, best_alone_avail] = summarise(team_stats, alone_stats);
   std::printf("map_sim_minutes: %.1f min\n", minutes);
   std::printf("map_ball_rmse_team_within_5m: %.4f m\n", team_all.rmse());
   std::printf("map_ball_rmse_best_single_within_5m: %.4f m\n", best_alone_rmse);
