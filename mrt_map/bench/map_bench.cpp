@@ -10,11 +10,15 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "mrt_map/world_model.h"
+#include "bench_diag.h"
 #include "team_sim.h"
 
 using namespace mrt::map;
+using bench::BallDiag;
+using bench::SwitchDiag;
 using bench::TeamSim;
 
 namespace {
@@ -31,25 +35,52 @@ struct Stats {
   double availability() const { return steps ? static_cast<double>(known) / static_cast<double>(steps) : NAN; }
 };
 
-// The ball anchor MAP would give Mr. BRIAN: the most reliable confirmed one.
-const Anchor* ball_anchor(const WorldModel& w, int ball_class, double now) {
+// The ball anchor MAP would give Mr. BRIAN: the most reliable confirmed one
+// (or confirmed/coasting with `coasting`).
+const Anchor* ball_anchor(const WorldModel& w, int ball_class, double now, bool coasting = false) {
   const Anchor* best = nullptr;
   for (const Anchor& a : w.tracker().anchors())
-    if (a.status == AnchorStatus::kConfirmed && w.model().is_a(a.class_index, ball_class) &&
+    if ((a.status == AnchorStatus::kConfirmed || (coasting && a.status == AnchorStatus::kCoasting)) &&
+        w.model().is_a(a.class_index, ball_class) &&
         (!best || w.tracker().reliability(a, now) > w.tracker().reliability(*best, now)))
       best = &a;
   return best;
 }
 
-void score_ball(const WorldModel& w, int ball_class, double now, const Vec2& truth, bool near, Stats& s) {
+// What the scoring of one step knows of the truth.
+struct BallTruth {
+  Vec2 p;
+  bool near;         // within 5 m of the nearest teammate
+  double nearest;    // m
+  int observers;     // robots with the ball in view
+  double since_kick;
+};
+
+void score_ball(const WorldModel& w, int ball_class, double now, const BallTruth& t, Stats& s,
+                BallDiag* diag = nullptr) {
   ++s.steps;
   const Anchor* a = ball_anchor(w, ball_class, now);
-  if (!a) return;
-  const double e = (a->fused.x.head<2>() - truth).norm();
+  const double e = a ? (a->fused.x.head<2>() - t.p).norm() : INFINITY;
   if (e < 0.5) ++s.known;  // known = a confirmed ball anchor within 0.5 m
-  if (near) {
+  if (a && t.near) {
     s.se += e * e;
     ++s.n_err;
+  }
+  if (!diag) return;
+  ++diag->steps;
+  const Anchor* c = ball_anchor(w, ball_class, now, true);
+  if (c && (c->fused.x.head<2>() - t.p).norm() < 0.5) ++diag->known_coasting;
+  if (t.observers > 0) ++diag->visible;
+  if (e < 0.5) diag->known_visible += t.observers > 0;
+  else if (t.observers == 0) ++diag->lost_unseen;
+  else if (!a) ++diag->lost_no_anchor;
+  else ++diag->lost_far;
+  if (a && t.near) diag->error(e, t.since_kick, t.nearest, t.observers);
+  if (a && t.near && a->has_local && a->local_last_seen >= now) {
+    diag->local_fresh.add((a->local.x.head<2>() - t.p).norm());
+    diag->fused_when_local_fresh.add(e);
+  } else if (a && t.near) {
+    diag->fused_from_teammates.add(e);
   }
 }
 
@@ -79,7 +110,13 @@ void count_anchors(const WorldModel& team, const WorldModel& alone, int ball_cla
 // 0.5 m of it (as in the CLEAR MOT metrics); otherwise it takes the nearest
 // confirmed Opponent anchor within 0.5 m; taking a different id than the
 // last one is an identity switch.
-long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, std::vector<long>& last_id) {
+std::map<long, std::string>& last_state() {
+  static std::map<long, std::string> m;
+  return m;
+}
+
+long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, std::vector<long>& last_id,
+                       std::vector<bool>& was_matched, SwitchDiag& diag) {
   long switches = 0;
   for (std::size_t o = 0; o < sim.opponents().size(); ++o) {
     const Anchor* best = nullptr;
@@ -93,11 +130,53 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
       }
       if (d < best_d) best = &a, best_d = d;
     }
+    const bool matched_before = was_matched[o];
+    was_matched[o] = best != nullptr;
+    ++(best ? diag.matched_steps : diag.unmatched_steps);
     if (!best) continue;
-    if (last_id[o] >= 0 && last_id[o] != static_cast<long>(best->id)) ++switches;
+    if (last_id[o] >= 0 && last_id[o] != static_cast<long>(best->id)) {
+      ++switches;
+      ++(matched_before ? diag.while_tracked : diag.at_reacquisition);
+      if (std::getenv("MAP_BENCH_DEBUG")) {
+        const Anchor* old = nullptr;
+        for (const Anchor& a : w.tracker().anchors()) if (static_cast<long>(a.id) == last_id[o]) old = &a;
+        std::printf("switch opp %zu: %ld -> %u (new age %.2f s, %s)", o, last_id[o], best->id,
+                    w.tracker().now() - best->first_seen, matched_before ? "tracked" : "reacq");
+        std::printf(" new: local=%d remotes=%zu", best->has_local, best->remote.size());
+        if (old)
+          std::printf(" old %s d=%.2f m sigma=%.2f unseen %.2f s", to_string(old->status),
+                      (old->fused.x.head<2>() - sim.opponents()[o].p).norm(), std::sqrt(old->fused.P(0, 0)),
+                      w.tracker().now() - old->last_seen);
+        else
+          std::printf(" old gone (last: %s)", last_state()[last_id[o]].c_str());
+        std::printf("\n");
+      }
+    }
     last_id[o] = best->id;
   }
+  if (std::getenv("MAP_BENCH_DEBUG"))
+    for (const Anchor& a : w.tracker().anchors()) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "%s %s sigma=%.2f unseen=%.2f", w.model().at(a.class_index).name.c_str(),
+                    to_string(a.status), std::sqrt(a.fused.P(0, 0)), w.tracker().now() - a.last_seen);
+      last_state()[a.id] = buf;
+    }
   return switches;
+}
+
+// The team's pooled figures and the best single robot's.
+std::tuple<Stats, double, double> summarise(const std::vector<Stats>& team_stats, const std::vector<Stats>& alone_stats) {
+  Stats team_all;
+  double best_alone_rmse = INFINITY, best_alone_avail = 0.0;
+  for (std::size_t i = 0; i < team_stats.size(); ++i) {
+    team_all.se += team_stats[i].se;
+    team_all.n_err += team_stats[i].n_err;
+    team_all.known += team_stats[i].known;
+    team_all.steps += team_stats[i].steps;
+    best_alone_rmse = std::min(best_alone_rmse, alone_stats[i].rmse());
+    best_alone_avail = std::max(best_alone_avail, alone_stats[i].availability());
+  }
+  return {team_all, best_alone_rmse, best_alone_avail};
 }
 
 void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
@@ -114,6 +193,9 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   std::deque<Message> network;
   // Identity switches: for each opponent, the id of robot 0's team anchor on it.
   std::vector<long> last_id(sim.opponents().size(), -1);
+  std::vector<bool> was_matched(sim.opponents().size(), false);
+  SwitchDiag switch_diag;
+  BallDiag ball_diag;
   long switches = 0;
   double next_team = 0.0;
   AnchorCounts counts;
@@ -126,8 +208,10 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
       for (int i = 0; i < n; ++i) team[i]->add_teammate_model(m.robot, m.tracks, m.stamp, &m.pose);
       network.pop_front();
     }
-    double nearest = INFINITY;
-    for (const auto& b : sim.mates()) nearest = std::min(nearest, (b.p - sim.ball().p).norm());
+    BallTruth truth{sim.ball().p, false, INFINITY, 0, sim.since_kick()};
+    for (const auto& b : sim.mates()) truth.nearest = std::min(truth.nearest, (b.p - sim.ball().p).norm());
+    for (int i = 0; i < n; ++i) truth.observers += sim.ball_in_view(i, cam);
+    truth.near = truth.nearest <= 5.0 && k * kDt > 2.0;
     for (int i = 0; i < n; ++i) {
       RobotPose pose;
       const auto objects = sim.see(i, cam, pose);
@@ -136,28 +220,23 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
         w->add_percept(objects, pose, t, t, "omnivision");
         w->update(t);
       }
-      const bool near = nearest <= 5.0 && k * kDt > 2.0;
       if (k * kDt > 2.0) {
-        score_ball(*team[i], ball_class, t, sim.ball().p, near, team_stats[i]);
-        score_ball(*alone[i], ball_class, t, sim.ball().p, near, alone_stats[i]);
+        score_ball(*team[i], ball_class, t, truth, team_stats[i], &ball_diag);
+        score_ball(*alone[i], ball_class, t, truth, alone_stats[i]);
       }
       if (t >= next_team)
         network.push_back({t + kTeamLatency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
     }
     if (t >= next_team) next_team += kTeamPeriod;
     count_anchors(*team[0], *alone[0], ball_class, opp_class, counts);
-    switches += identity_switches(*team[0], opp_class, sim, last_id);
+    for (int o = 0; o < static_cast<int>(sim.opponents().size()); ++o) {
+      bool in_view = false;
+      for (int i = 0; i < n && !in_view; ++i) in_view = sim.opponent_in_view(i, o, cam);
+      switch_diag.visibility(static_cast<std::size_t>(o), in_view, kDt);
+    }
+    switches += identity_switches(*team[0], opp_class, sim, last_id, was_matched, switch_diag);
   }
-  Stats team_all;
-  double best_alone_rmse = INFINITY, best_alone_avail = 0.0;
-  for (int i = 0; i < n; ++i) {
-    team_all.se += team_stats[i].se;
-    team_all.n_err += team_stats[i].n_err;
-    team_all.known += team_stats[i].known;
-    team_all.steps += team_stats[i].steps;
-    best_alone_rmse = std::min(best_alone_rmse, alone_stats[i].rmse());
-    best_alone_avail = std::max(best_alone_avail, alone_stats[i].availability());
-  }
+  const auto [team_all, best_alone_rmse, best_alone_avail] = summarise(team_stats, alone_stats);
   std::printf("map_sim_minutes: %.1f min\n", minutes);
   std::printf("map_ball_rmse_team_within_5m: %.4f m\n", team_all.rmse());
   std::printf("map_ball_rmse_best_single_within_5m: %.4f m\n", best_alone_rmse);
@@ -171,6 +250,8 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   std::printf("map_confirmed_opponent_anchors_single_mean: %.2f count\n", counts.alone_robots / steps);
   std::printf("map_confirmed_ball_anchors_team_mean: %.2f count (truth: 1)\n", counts.balls / steps);
   std::printf("map_opponent_id_switches_per_opponent_per_10min: %.2f count\n", per10);
+  ball_diag.print();
+  switch_diag.print(sim.opponents().size(), minutes);
 }
 
 // 50 objects seen by a robot and by each of its 4 teammates: one full

@@ -54,7 +54,9 @@ void TeamSim::step(double dt) {
     const double a = ang(rng_), s = speed(rng_);
     ball_.v = Vec2(s * std::cos(a), s * std::sin(a));
     kick_timer_ = wait(rng_);
+    since_kick_ = 0.0;
   }
+  since_kick_ += dt;
   ball_.v *= std::exp(-0.3 * dt);
   ball_.p += ball_.v * dt;
   if (std::fabs(ball_.p.x()) > kHalfX) {
@@ -79,6 +81,17 @@ bool TeamSim::occluded(const Vec2& a, const Vec2& b, int skip_mate, int skip_opp
   for (int i = 0; i < static_cast<int>(opps_.size()); ++i)
     if (i != skip_opp && blocks(opps_[i])) return true;
   return false;
+}
+
+bool TeamSim::ball_in_view(int i, const CameraModel& cam) const {
+  const Vec2& me = mates_[static_cast<std::size_t>(i)].p;
+  return (ball_.p - me).norm() <= cam.range && !occluded(me, ball_.p, i, -1);
+}
+
+bool TeamSim::opponent_in_view(int i, int k, const CameraModel& cam) const {
+  const Vec2& me = mates_[static_cast<std::size_t>(i)].p;
+  const Vec2& o = opps_[static_cast<std::size_t>(k)].p;
+  return (o - me).norm() <= cam.range && !occluded(me, o, i, k);
 }
 
 std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose& believed) {

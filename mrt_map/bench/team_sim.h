@@ -42,6 +42,13 @@ class TeamSim {
   std::vector<PerceptObject> see(int i, const CameraModel& cam, RobotPose& believed);
   /// True when the segment a-b passes through a robot other than `skip_mate`/`skip_opp`.
   bool occluded(const Vec2& a, const Vec2& b, int skip_mate, int skip_opp) const;
+  /// True when robot i's camera could see the ball now (range, occlusion;
+  /// detection misses aside): the ground truth of "the ball is visible".
+  bool ball_in_view(int i, const CameraModel& cam) const;
+  /// True when robot i's camera could see opponent k now (range, occlusion).
+  bool opponent_in_view(int i, int k, const CameraModel& cam) const;
+  /// Time since the ball was last kicked (s).
+  double since_kick() const { return since_kick_; }
 
  private:
   void move(Body& b, double dt);
@@ -50,6 +57,7 @@ class TeamSim {
   std::vector<Body> mates_, opps_;
   Body ball_;
   double kick_timer_ = 0.0;
+  double since_kick_ = 0.0;
 };
 
 }  // namespace mrt::map::bench

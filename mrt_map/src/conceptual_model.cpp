@@ -64,7 +64,7 @@ class ModelLoader {
       const std::string what = m_.classes_[i].name;
       if (b.IsNull()) continue;
       r_.map(b, what, {"parent", "attributes", "motion", "accel_noise", "init_speed_sigma", "default_sigma",
-                       "refined_by"});
+                       "refined_by", "velocity_tau", "drop_after", "max_sigma"});
       if (const YAML::Node p = b["parent"]) {
         const int pi = m_.find(r_.string(p, "parent"));
         if (pi < 0) r_.fail(p, "unknown parent class '" + p.Scalar() + "' of '" + what + "'");
@@ -94,6 +94,9 @@ class ModelLoader {
       c.accel_noise = p.accel_noise;
       c.init_speed_sigma = p.init_speed_sigma;
       c.default_sigma = p.default_sigma;
+      c.velocity_tau = p.velocity_tau;
+      c.drop_after = p.drop_after;
+      c.max_sigma = p.max_sigma;
     }
     if (b.IsNull()) return;
     if (const YAML::Node mo = b["motion"]) {
@@ -105,6 +108,9 @@ class ModelLoader {
     c.accel_noise = r_.non_negative(b, "accel_noise", c.accel_noise);
     c.init_speed_sigma = r_.non_negative(b, "init_speed_sigma", c.init_speed_sigma);
     c.default_sigma = r_.positive(b, "default_sigma", c.default_sigma);
+    c.velocity_tau = r_.non_negative(b, "velocity_tau", c.velocity_tau);
+    c.drop_after = r_.non_negative(b, "drop_after", c.drop_after);
+    c.max_sigma = r_.non_negative(b, "max_sigma", c.max_sigma);
     if (const YAML::Node rb = b["refined_by"]) {
       if (r_.string(rb, "refined_by") != "teammate_pose") r_.fail(rb, "expected 'teammate_pose' for 'refined_by'");
       c.refined_by_teammate_pose = true;
@@ -156,7 +162,7 @@ class ModelLoader {
     TrackerOptions& t = m_.tracker_;
     r_.map(n, "tracker", {"gate", "merge_gate", "confirm_hits", "tentative_timeout", "coast_after", "drop_after",
                           "max_sigma", "reliability_tau", "coalesce_gate",
-                          "coalesce_after", "maneuver_radius"});
+                          "coalesce_after", "maneuver_radius", "reid_gate"});
     t.gate = r_.positive(n, "gate", t.gate);
     t.merge_gate = r_.positive(n, "merge_gate", t.merge_gate);
     if (n["confirm_hits"]) t.confirm_hits = static_cast<int>(r_.integer(n["confirm_hits"], "confirm_hits", 1, 1000));
@@ -169,6 +175,7 @@ class ModelLoader {
     t.coalesce_gate = r_.non_negative(n, "coalesce_gate", t.coalesce_gate);
     t.coalesce_after = r_.non_negative(n, "coalesce_after", t.coalesce_after);
     t.maneuver_radius = r_.non_negative(n, "maneuver_radius", t.maneuver_radius);
+    t.reid_gate = r_.non_negative(n, "reid_gate", t.reid_gate);
   }
 
   void team(const YAML::Node& n) {

@@ -8,8 +8,14 @@ namespace mrt::map {
 Mat4 transition(const ClassDef& c, double dt) {
   Mat4 F = Mat4::Identity();
   if (c.motion == MotionModel::kConstantVelocity) {
-    F(0, 2) = dt;
-    F(1, 3) = dt;
+    if (c.velocity_tau > 0.0) {  // integrated Ornstein-Uhlenbeck
+      const double tau = c.velocity_tau, one_minus_a = -std::expm1(-dt / tau);
+      F(0, 2) = F(1, 3) = tau * one_minus_a;
+      F(2, 2) = F(3, 3) = 1.0 - one_minus_a;
+    } else {
+      F(0, 2) = dt;
+      F(1, 3) = dt;
+    }
   }
   return F;
 }
@@ -18,7 +24,16 @@ Mat4 process_noise(const ClassDef& c, double dt) {
   const double q = c.accel_noise * c.accel_noise;
   Mat4 Q = Mat4::Zero();
   if (c.motion == MotionModel::kConstantVelocity) {
-    const double a = q * dt * dt * dt / 3.0, b = q * dt * dt / 2.0, d = q * dt;
+    double a = q * dt * dt * dt / 3.0, b = q * dt * dt / 2.0, d = q * dt;
+    if (c.velocity_tau > 0.0) {
+      // White acceleration through v' = -v/tau + w, integrated exactly over dt
+      // (e = 1 - exp(-dt/tau)): q tau^2 (dt - 2 tau e + tau/2 (1 - (1-e)^2)),
+      // q tau^2 / 2 e^2, q tau / 2 (1 - (1-e)^2).
+      const double tau = c.velocity_tau, e = -std::expm1(-dt / tau), one_minus_a2 = e * (2.0 - e);
+      a = q * tau * tau * (dt - 2.0 * tau * e + 0.5 * tau * one_minus_a2);
+      b = 0.5 * q * tau * tau * e * e;
+      d = 0.5 * q * tau * one_minus_a2;
+    }
     Q(0, 0) = Q(1, 1) = a;
     Q(0, 2) = Q(2, 0) = Q(1, 3) = Q(3, 1) = b;
     Q(2, 2) = Q(3, 3) = d;

@@ -33,8 +33,7 @@ Anchor& Tracker::create(double now, int class_index, double degree) {
   return anchors_.back();
 }
 
-void Tracker::cycle(double now, const std::vector<Observation>& observations,
-                    const std::vector<RemoteTrack>& remote) {
+void Tracker::cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote) {
   now_ = now;
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
@@ -103,6 +102,20 @@ void Tracker::coalesce() {
   close_since_ = std::move(still_close);
 }
 
+Anchor* Tracker::reidentify(int class_index, const Vec2& z, const Mat2& R) {
+  const double gate = model_.tracker().reid_gate;
+  Anchor* best = nullptr;
+  double best_d = gate;
+  if (!(gate > 0.0)) return nullptr;
+  for (Anchor& a : anchors_) {
+    if (a.status != AnchorStatus::kCoasting || seen_.count(a.id) || !model_.compatible(class_index, a.class_index))
+      continue;
+    const double d = mahalanobis2(a.fused, z, R);
+    if (d <= best_d) best_d = d, best = &a;
+  }
+  return best;
+}
+
 void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
   const double gate = model_.tracker().gate;
   const double radius = model_.tracker().maneuver_radius;
@@ -132,7 +145,9 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
       bool gated = false;  // a second detection of an anchored object: no new symbol
       for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
       if (gated) continue;
-      a = &create(now, o.class_index, o.degree);
+      a = reidentify(o.class_index, o.z, o.R);
+      if (a) refine_class(model_, *a, o.class_index, o.degree);
+      else a = &create(now, o.class_index, o.degree);
     }
     const ClassDef& c = model_.at(a->class_index);
     if (!a->has_local) {
@@ -158,12 +173,12 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
   }
 }
 
-void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remote) {
+void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
   const double gate = model_.team().gate;
   const double radius = model_.tracker().maneuver_radius;
   const double fresh = model_.tracker().coast_after;
-  std::map<std::string, std::vector<const RemoteTrack*>> by_robot;
-  for (const RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
+  std::map<std::string, std::vector<RemoteTrack*>> by_robot;
+  for (RemoteTrack& t : remote) by_robot[t.robot].push_back(&t);
   for (const auto& [robot, tracks] : by_robot) {
     const std::size_t existing = anchors_.size();
     std::vector<std::vector<double>> cost(tracks.size(), std::vector<double>(existing, kInfeasible));
@@ -186,7 +201,7 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
       }
     const std::vector<int> match = assign(cost, gate);
     for (std::size_t r = 0; r < tracks.size(); ++r) {
-      const RemoteTrack& t = *tracks[r];
+      RemoteTrack& t = *tracks[r];
       const bool is_fresh = t.last_seen >= now - fresh;
       Anchor* a = nullptr;
       if (match[r] >= 0) {
@@ -197,18 +212,23 @@ void Tracker::associate_remote(double now, const std::vector<RemoteTrack>& remot
         bool gated = false;
         for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
         if (gated) continue;
-        a = &create(now, t.class_index, t.degree);
-        a->fused = t.estimate;
+        a = reidentify(t.class_index, t.estimate.x.head<2>(), t.estimate.P.topLeftCorner<2, 2>());
+        if (a) {
+          refine_class(model_, *a, t.class_index, t.degree);
+        } else {
+          a = &create(now, t.class_index, t.degree);
+          a->fused = t.estimate;
+        }
       } else {
         continue;
       }
-      a->remote[robot] = t;
       a->remote_ids[robot] = t.id;
       if (is_fresh) {
         a->last_seen = std::max(a->last_seen, t.last_seen);
         a->sources.insert(t.sensors.begin(), t.sensors.end());
         seen_.insert(a->id);
       }
+      a->remote[robot] = std::move(t);  // t's last use
     }
   }
 }
@@ -231,6 +251,9 @@ void Tracker::fuse(double now) {
 void Tracker::life_cycle(double now) {
   const TrackerOptions& o = model_.tracker();
   for (Anchor& a : anchors_) {
+    const ClassDef& c = model_.at(a.class_index);
+    const double drop_after = c.drop_after > 0.0 ? c.drop_after : o.drop_after;
+    const double max_sigma = c.max_sigma > 0.0 ? c.max_sigma : o.max_sigma;
     if (seen_.count(a.id)) {
       ++a.hits;
       if ((a.status == AnchorStatus::kTentative && a.hits >= o.confirm_hits) || a.status == AnchorStatus::kCoasting)
@@ -239,10 +262,10 @@ void Tracker::life_cycle(double now) {
       const double age = now - a.last_seen;
       if (a.status == AnchorStatus::kTentative && age > o.tentative_timeout) a.status = AnchorStatus::kDropped;
       else if (a.status == AnchorStatus::kConfirmed && age > o.coast_after) a.status = AnchorStatus::kCoasting;
-      if (a.status == AnchorStatus::kCoasting && age > o.drop_after) a.status = AnchorStatus::kDropped;
-      if (position_sigma_max(a.fused.P) > o.max_sigma) a.status = AnchorStatus::kDropped;
+      if (a.status == AnchorStatus::kCoasting && age > drop_after) a.status = AnchorStatus::kDropped;
+      if (position_sigma_max(a.fused.P) > max_sigma) a.status = AnchorStatus::kDropped;
     }
-    if (a.has_local && now - a.local_last_seen > o.drop_after) {
+    if (a.has_local && now - a.local_last_seen > drop_after) {
       a.has_local = false;
       a.local_hits = 0;
     }

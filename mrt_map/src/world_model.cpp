@@ -1,6 +1,7 @@
 #include "mrt_map/world_model.h"
 
 #include <cmath>
+#include <utility>
 
 #include "mrt_common/angle.h"
 
@@ -62,7 +63,7 @@ void WorldModel::update(double now) {
       else ++counters_.stale_team;
     }
   }
-  tracker_.cycle(now, merged, remote);
+  tracker_.cycle(now, merged, std::move(remote));
 }
 
 void WorldModel::set_parameter(const std::string& name, double value, double reliability, double) {

@@ -37,6 +37,10 @@ struct ClassDef {
   double accel_noise = 1.0;      // m/s^2 (white acceleration, CV) or m/sqrt(s) drift (static)
   double init_speed_sigma = 2.0; // m/s, velocity prior of a new anchor (CV)
   double default_sigma = 0.1;    // m, position sigma when a percept gives none
+  double velocity_tau = 0.0;     // s, CV only: velocity decays as exp(-dt/tau) (integrated
+                                 // Ornstein-Uhlenbeck); 0 = constant velocity, no decay
+  double drop_after = 0.0;       // s, per-class tracker.drop_after (0 = the tracker's)
+  double max_sigma = 0.0;        // m, per-class tracker.max_sigma (0 = the tracker's)
   bool refined_by_teammate_pose = false;  // a Robot becomes this class near a teammate
 };
 
@@ -58,6 +62,9 @@ struct TrackerOptions {
   double maneuver_radius = 0.5;  // m: an observation outside the gate but this close to the
                                 // only anchor near it is a manoeuvre (kick): velocity reset
   double coalesce_after = 0.5;   // s ... for this long are one object (not a crossing): joined
+  double reid_gate = 0.0;        // chi-square: an observation (or a teammate's track) no anchor
+                                 // takes, within this of a coasting anchor, re-identifies it
+                                 // (nearest first) instead of creating a symbol; 0 = off
 };
 
 struct TeamOptions {

@@ -26,7 +26,8 @@ class Tracker {
   /// One cycle at time `now`: predict, associate and update with the own
   /// (already merged) observations, link and fuse the teammates' anchors
   /// (already latency-compensated to `now`), advance the life cycle.
-  void cycle(double now, const std::vector<Observation>& observations, const std::vector<RemoteTrack>& remote);
+  /// (`remote` by value: the caller moves its compensated tracks in.)
+  void cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote);
 
   /// A teammate's reported pose (world frame): Robot anchors it explains
   /// (Mahalanobis within team.gate) become the class refined_by teammate_pose.
@@ -41,17 +42,22 @@ class Tracker {
   /// estimates only (so a teammate never gets its own data back).
   std::vector<RemoteTrack> local_tracks(const std::string& robot) const;
   std::uint64_t dropped_count() const { return dropped_; }
+  /// Time of the last cycle.
+  double now() const { return now_; }
   /// Anchors joined into an older one (two symbols for one object).
   std::uint64_t coalesced_count() const { return coalesced_; }
 
  private:
   void associate_local(double now, const std::vector<Observation>& obs);
-  void associate_remote(double now, const std::vector<RemoteTrack>& remote);
+  void associate_remote(double now, std::vector<RemoteTrack>& remote);
   void fuse(double now);
   void coalesce();
   void life_cycle(double now);
   void refine_teammates(double now);
   Anchor& create(double now, int class_index, double degree);
+  /// The coasting anchor (not supported this cycle, compatible class) nearest
+  /// to z within tracker.reid_gate (squared Mahalanobis), or null.
+  Anchor* reidentify(int class_index, const Vec2& z, const Mat2& R);
 
   const ConceptualModel& model_;
   Merger merger_;
