@@ -191,3 +191,29 @@ TEST(Coordinator, RefusesMalformedAndOldMessages) {
   EXPECT_EQ(t.c[0].team_size(), 1u);
   EXPECT_EQ(t.c[0].drops(), 1u);
 }
+
+// robot1 (Defense in the worked example) hands Defense back at 0.15 s: it
+// leaves it at once and, with the 5 s penalty, no robot's allocation gives
+// it Defense again before 5.15 s; the three still agree every cycle; from
+// 5.15 s on its published attitude for Defense is its own again.
+TEST(Coordinator, HandBackMovesTheJobForThePenalty) {
+  Team t;
+  const std::vector<bool> all{true, true, true};
+  t.cycle(0.0, all, passing());
+  t.cycle(0.1, all, passing());
+  ASSERT_EQ(t.job(0), "Defense");
+  const int defense = t.c[0].set().find_slot("Defense");
+  const double attitude = t.c[0].publish(0.12, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)];
+  ASSERT_GT(attitude, 0.0);
+  EXPECT_FALSE(t.c[0].hand_back("Nothing", 0.15));
+  EXPECT_TRUE(t.c[0].hand_back("Defense", 0.15));
+  EXPECT_EQ(t.c[0].own_slot(), -1);
+  for (int k = 2; k <= 51; ++k) {  // 0.2 s .. 5.1 s
+    t.cycle(0.1 * k, all, passing());
+    EXPECT_NE(t.c[0].own_slot(), defense) << "at " << 0.1 * k << " s";
+    EXPECT_EQ(t.c[0].last().slot, t.c[1].last().slot);
+    EXPECT_EQ(t.c[1].last().slot, t.c[2].last().slot);
+  }
+  EXPECT_EQ(t.c[0].publish(5.14, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], 0.0);
+  EXPECT_EQ(t.c[0].publish(5.15, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], attitude);
+}
