@@ -217,3 +217,26 @@ TEST(Coordinator, HandBackMovesTheJobForThePenalty) {
   EXPECT_EQ(t.c[0].publish(5.14, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], 0.0);
   EXPECT_EQ(t.c[0].publish(5.15, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], attitude);
 }
+
+// robot1 lost robot3's last message (stamp 0.1 s), robot2 got it and says so
+// in its next message: robot1 drops robot3 drop_timeout (1 s) after 0.1 s,
+// like robot2, not after 0.0 s: kept at 1.05 s (0.95 s), dropped at 1.15 s.
+TEST(Coordinator, GossipAlignsTheDrop) {
+  Team t;
+  const std::vector<bool> all{true, true, true};
+  t.cycle(0.0, all, passing());
+  const CoordinationMessage last3 = t.c[2].publish(0.1, t.pose[2], passing());
+  t.c[1].receive(last3);  // lost on its way to robot1
+  const CoordinationMessage from2 = t.c[1].publish(0.2, t.pose[1], passing());
+  ASSERT_EQ(from2.heard.size(), 2u);
+  t.c[0].receive(from2);
+  t.c[0].receive(t.c[1].publish(1.0, t.pose[1], passing()));  // robot2 stays fresh
+  t.c[0].step(1.05);
+  EXPECT_EQ(t.c[0].team_size(), 3u);
+  t.c[0].step(1.15);
+  EXPECT_EQ(t.c[0].team_size(), 2u);
+  // Gossip never brings back a dropped robot.
+  t.c[0].receive(t.c[1].publish(1.2, t.pose[1], passing()));
+  t.c[0].step(1.25);
+  EXPECT_EQ(t.c[0].team_size(), 2u);
+}
