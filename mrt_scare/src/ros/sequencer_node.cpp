@@ -106,6 +106,8 @@ void SequencerNode::on_pose(const nav_msgs::Odometry& o) {
 
 void SequencerNode::on_job(const std_msgs::String& j) {
   if (j.data == seq_.job() && !have_pending_job_ && seq_.state() == SequencerState::kRunning) return;
+  // "" (no job, or waiting) stops a job, never a plan from the planner.
+  if (j.data.empty() && seq_.job().empty() && !have_pending_job_) return;
   pending_job_ = j.data;
   if (!pending_job_.empty() && !seq_.knows_job(pending_job_)) {
     ++dropped_;
