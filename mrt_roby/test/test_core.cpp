@@ -22,6 +22,21 @@ TEST(TaskConfig, ShippedFileLoads) {
   EXPECT_GT(o.path_task.timeout_limit(0.0), 0.0);
 }
 
+// The machine version of the task file gives the shipped file's numbers: a
+// 10 m leg from the origin, 15 + 4 * 10 = 55 s; 70 cm from the point not
+// reached, 50 cm reached (within 0.6 m / ARRIVED [0, 60] cm).
+TEST(TaskConfig, MachineFileMatchesTheShippedOne) {
+  for (const char* file : {MRT_ROBY_CONFIG "/tasks.yaml", MRT_ROBY_CONFIG "/tasks_machine.yaml"}) {
+    mrt::scare::Sequencer seq(load_sequencer_options(file));
+    seq.set_plan({{10.0, 0.0}}, 0.0, {0.0, 0.0, 0.0});
+    EXPECT_DOUBLE_EQ(seq.active_timeout(), 55.0) << file;
+    EXPECT_EQ(seq.update(1.0, {9.3, 0.0, 0.0}).size(), 0u) << file;
+    EXPECT_EQ(seq.update(2.0, {9.5, 0.0, 0.0}).size(), 2u) << file;  // succeeded, route completed
+    EXPECT_EQ(seq.state(), mrt::scare::SequencerState::kDone) << file;
+  }
+  EXPECT_TRUE(load_sequencer_options(MRT_ROBY_CONFIG "/tasks_machine.yaml").machines);
+}
+
 TEST(RoadMap, ParsesAndPlans) {
   RoadMap m = parse_road_map(
       "frame: world\nclearance: 0.5\nbuildings:\n  - {name: A, box: [2, 1, 4, 3]}\n"

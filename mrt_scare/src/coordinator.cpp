@@ -1,6 +1,8 @@
 #include "mrt_scare/coordinator.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace mrt::scare {
@@ -56,6 +58,12 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
   RobotView v = robot_view(s, self_, pose, crisp, *cost_);
   m.attitude = std::move(v.attitude);
   m.time = std::move(v.time);
+  for (const auto& [id, t] : team_)
+    if (id != self_.id) m.heard.emplace_back(id, newest(id, t));
+  for (auto it = handed_back_.begin(); it != handed_back_.end();) {
+    if (now < it->second) m.attitude[static_cast<std::size_t>(it->first)] = 0.0;
+    it = now < it->second ? std::next(it) : handed_back_.erase(it);
+  }
   team_[self_.id] = m;
   return m;
 }
@@ -64,6 +72,7 @@ bool Coordinator::receive(const CoordinationMessage& m) {
   if (m.robot_id.empty() || m.robot_id == self_.id) return m.robot_id == self_.id;
   if (m.leaving) {
     drops_ += team_.erase(m.robot_id);
+    heard_.erase(m.robot_id);
     return true;
   }
   const auto n = slots_.size();
@@ -76,7 +85,15 @@ bool Coordinator::receive(const CoordinationMessage& m) {
   if (!ok) return false;
   const auto it = team_.find(m.robot_id);
   if (it == team_.end() || m.seq > it->second.seq || m.stamp > it->second.stamp) team_[m.robot_id] = m;
+  // Gossip only delays the drop of a teammate still held (never re-adds one).
+  for (const auto& [id, stamp] : m.heard)
+    if (id != self_.id && std::isfinite(stamp) && team_.count(id) && stamp > heard_[id]) heard_[id] = stamp;
   return true;
+}
+
+double Coordinator::newest(const std::string& id, const CoordinationMessage& m) const {
+  const auto h = heard_.find(id);
+  return h == heard_.end() ? m.stamp : std::max(m.stamp, h->second);
 }
 
 TeamInput Coordinator::team_input(double now) const {
@@ -99,7 +116,11 @@ TeamInput Coordinator::team_input(double now) const {
 
 Allocation Coordinator::step(double now) {
   for (auto it = team_.begin(); it != team_.end();) {
-    if (it->first != self_.id && now - it->second.stamp > options_.drop_timeout) {
+    // Dropped when neither this robot nor, by their gossip, its teammates
+    // have heard it for drop_timeout: survivors whose own copy of its last
+    // message was lost drop it with the others, not a cycle earlier.
+    if (it->first != self_.id && now - newest(it->first, it->second) > options_.drop_timeout) {
+      heard_.erase(it->first);
       it = team_.erase(it);
       ++drops_;
     } else {
@@ -124,6 +145,14 @@ Allocation Coordinator::step(double now) {
   }
   own_slot_ = waiting_ ? -1 : want;
   return last_;
+}
+
+bool Coordinator::hand_back(const std::string& slot, double now) {
+  const int s = set().find_slot(slot);
+  if (s < 0) return false;
+  handed_back_[s] = now + options_.hand_back_penalty;
+  if (own_slot_ == s) own_slot_ = -1;
+  return true;
 }
 
 std::vector<CrispOut> Coordinator::crisp_output() const {

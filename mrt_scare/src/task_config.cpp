@@ -60,12 +60,52 @@ TaskSpec parse_task(const YamlReader& r, const YAML::Node& n, const std::string&
   return t;
 }
 
+/// A task file of state machines: some task has `states` (task_machine.h).
+bool is_machine_file(const YAML::Node& root) {
+  if (root["jobs"] || root["threshold"]) return true;
+  const YAML::Node tasks = root["tasks"];
+  if (!tasks || !tasks.IsMap()) return false;
+  for (auto it = tasks.begin(); it != tasks.end(); ++it)
+    if (it->second.IsMap() && it->second["states"]) return true;
+  return false;
+}
+
+/// The keys the sequencer reads from either format.
+void read_sequencer_keys(const YamlReader& r, const YAML::Node& root, SequencerOptions& o) {
+  if (root["max_replans"]) {
+    const double m = r.non_negative(root["max_replans"], "max_replans");
+    if (m != static_cast<int>(m) || m > 1000)
+      r.fail(root["max_replans"], "expected an integer 0..1000 for 'max_replans'");
+    o.max_replans = static_cast<int>(m);
+  }
+  if (root["replan_timeout"]) o.replan_timeout = r.non_negative(root["replan_timeout"], "replan_timeout");
+  if (root["suspend_in_manual"])
+    o.suspend_in_manual = r.boolean(root["suspend_in_manual"], "suspend_in_manual");
+}
+
+SequencerOptions parse_machine_options(const YamlReader& r, const YAML::Node& root, const std::string& yaml_text) {
+  SequencerOptions o;
+  auto lib = std::make_shared<TaskLibrary>(parse_task_library(yaml_text, r.file()));
+  std::string path_task = "ReachPathPoint";
+  if (root["path_task"]) path_task = r.string(root["path_task"], "path_task");
+  // A file of jobs only need not define the path task (its plans then never end by themselves).
+  if (!lib->tasks.count(path_task) && (root["path_task"] || lib->jobs.empty()))
+    r.fail(root["path_task"] ? root["path_task"] : root["tasks"],
+           "path task '" + path_task + "' is not defined under 'tasks'");
+  o.path_task = TaskSpec{};  // the machine decides; the spec carries the name
+  o.path_task.name = path_task;
+  o.machines = std::move(lib);
+  read_sequencer_keys(r, root, o);
+  return o;
+}
+
 }  // namespace
 
 SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std::string& file) {
   const YamlReader r(file);
   const YAML::Node root = r.load(yaml_text);
   if (!root.IsMap()) throw common::ParseError(file, 1, 1, "expected a map at the top level");
+  if (is_machine_file(root)) return parse_machine_options(r, root, yaml_text);
   r.map(root, "top level", {"tasks", "path_task", "max_replans", "replan_timeout", "suspend_in_manual", "fuzzy"});
   Fuzzy fz;
   fz.text = &yaml_text;
@@ -84,15 +124,7 @@ SequencerOptions parse_sequencer_options(const std::string& yaml_text, const std
     r.fail(root["path_task"] ? root["path_task"] : root["tasks"],
            "path task '" + path_task + "' is not defined under 'tasks'");
   o.path_task = tasks[path_task];
-  if (root["max_replans"]) {
-    const double m = r.non_negative(root["max_replans"], "max_replans");
-    if (m != static_cast<int>(m) || m > 1000)
-      r.fail(root["max_replans"], "expected an integer 0..1000 for 'max_replans'");
-    o.max_replans = static_cast<int>(m);
-  }
-  if (root["replan_timeout"]) o.replan_timeout = r.non_negative(root["replan_timeout"], "replan_timeout");
-  if (root["suspend_in_manual"])
-    o.suspend_in_manual = r.boolean(root["suspend_in_manual"], "suspend_in_manual");
+  read_sequencer_keys(r, root, o);
   return o;
 }
 

@@ -89,7 +89,9 @@ TaskDefinition parse_task(const YamlReader& y, const YAML::Node& n, const std::s
 TaskLibrary parse_task_library(const std::string& text, const std::string& file) {
   const YamlReader y(file);
   const YAML::Node root = y.load(text);
-  y.map(root, "task file", {"fuzzy", "threshold", "tasks"});
+  // The sequencer's own keys are read by task_config.cpp from the same file.
+  y.map(root, "task file",
+        {"fuzzy", "threshold", "tasks", "jobs", "path_task", "max_replans", "replan_timeout", "suspend_in_manual"});
   TaskLibrary lib;
   lib.model = detail::parse_fuzzy(y, y.required(root, "fuzzy", "task file"), text);
   lib.threshold = y.bounded(root, "threshold", 0.5, 0.0, true, 1.0);
@@ -100,7 +102,27 @@ TaskLibrary parse_task_library(const std::string& text, const std::string& file)
     if (lib.tasks.count(name)) y.fail(it->first, "duplicate task '" + name + "'");
     lib.tasks[name] = parse_task(y, it->second, name, *lib.model, text);
   }
+  if (const YAML::Node jobs = root["jobs"]) {
+    if (!jobs.IsMap()) y.fail(jobs, "expected a map of jobs for 'jobs'");
+    for (auto it = jobs.begin(); it != jobs.end(); ++it) {
+      const std::string name = y.string(it->first, "job name");
+      if (lib.jobs.count(name)) y.fail(it->first, "duplicate job '" + name + "'");
+      if (!it->second.IsSequence() || it->second.size() == 0)
+        y.fail(it->second, "expected a non-empty list of tasks for job '" + name + "'");
+      std::vector<std::string>& list = lib.jobs[name];
+      for (const auto& t : it->second) {
+        list.push_back(y.string(t, "task"));
+        if (!lib.tasks.count(list.back())) y.fail(t, "unknown task '" + list.back() + "' in job '" + name + "'");
+      }
+    }
+  }
   return lib;
+}
+
+const std::vector<std::string>* TaskLibrary::job_tasks(const std::string& job) const {
+  auto it = jobs.find(job);
+  if (it == jobs.end()) it = jobs.find(job.substr(0, job.find('.')));
+  return it == jobs.end() ? nullptr : &it->second;
 }
 
 TaskLibrary load_task_library(const std::string& path) { return parse_task_library(detail::read_file(path), path); }

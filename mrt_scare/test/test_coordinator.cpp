@@ -191,3 +191,52 @@ TEST(Coordinator, RefusesMalformedAndOldMessages) {
   EXPECT_EQ(t.c[0].team_size(), 1u);
   EXPECT_EQ(t.c[0].drops(), 1u);
 }
+
+// robot1 (Defense in the worked example) hands Defense back at 0.15 s: it
+// leaves it at once and, with the 5 s penalty, no robot's allocation gives
+// it Defense again before 5.15 s; the three still agree every cycle; from
+// 5.15 s on its published attitude for Defense is its own again.
+TEST(Coordinator, HandBackMovesTheJobForThePenalty) {
+  Team t;
+  const std::vector<bool> all{true, true, true};
+  t.cycle(0.0, all, passing());
+  t.cycle(0.1, all, passing());
+  ASSERT_EQ(t.job(0), "Defense");
+  const int defense = t.c[0].set().find_slot("Defense");
+  const double attitude = t.c[0].publish(0.12, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)];
+  ASSERT_GT(attitude, 0.0);
+  EXPECT_FALSE(t.c[0].hand_back("Nothing", 0.15));
+  EXPECT_TRUE(t.c[0].hand_back("Defense", 0.15));
+  EXPECT_EQ(t.c[0].own_slot(), -1);
+  for (int k = 2; k <= 51; ++k) {  // 0.2 s .. 5.1 s
+    t.cycle(0.1 * k, all, passing());
+    EXPECT_NE(t.c[0].own_slot(), defense) << "at " << 0.1 * k << " s";
+    EXPECT_EQ(t.c[0].last().slot, t.c[1].last().slot);
+    EXPECT_EQ(t.c[1].last().slot, t.c[2].last().slot);
+  }
+  EXPECT_EQ(t.c[0].publish(5.14, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], 0.0);
+  EXPECT_EQ(t.c[0].publish(5.15, t.pose[0], passing()).attitude[static_cast<std::size_t>(defense)], attitude);
+}
+
+// robot1 lost robot3's last message (stamp 0.1 s), robot2 got it and says so
+// in its next message: robot1 drops robot3 drop_timeout (1 s) after 0.1 s,
+// like robot2, not after 0.0 s: kept at 1.05 s (0.95 s), dropped at 1.15 s.
+TEST(Coordinator, GossipAlignsTheDrop) {
+  Team t;
+  const std::vector<bool> all{true, true, true};
+  t.cycle(0.0, all, passing());
+  const CoordinationMessage last3 = t.c[2].publish(0.1, t.pose[2], passing());
+  t.c[1].receive(last3);  // lost on its way to robot1
+  const CoordinationMessage from2 = t.c[1].publish(0.2, t.pose[1], passing());
+  ASSERT_EQ(from2.heard.size(), 2u);
+  t.c[0].receive(from2);
+  t.c[0].receive(t.c[1].publish(1.0, t.pose[1], passing()));  // robot2 stays fresh
+  t.c[0].step(1.05);
+  EXPECT_EQ(t.c[0].team_size(), 3u);
+  t.c[0].step(1.15);
+  EXPECT_EQ(t.c[0].team_size(), 2u);
+  // Gossip never brings back a dropped robot.
+  t.c[0].receive(t.c[1].publish(1.2, t.pose[1], passing()));
+  t.c[0].step(1.25);
+  EXPECT_EQ(t.c[0].team_size(), 2u);
+}

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mrt_common/pose2d.h"
@@ -50,6 +51,9 @@ struct CoordinationMessage {
   std::vector<double> attitude;      // per slot
   std::vector<double> time;          // per slot, s (inf: target unknown)
   std::vector<double> opportunity;   // per activity, its own estimate
+  /// Gossip for the drop decision: each teammate it holds and the newest
+  /// stamp it has of that teammate (directly or from others' gossip).
+  std::vector<std::pair<std::string, double>> heard;
 };
 
 struct CoordinatorOptions {
@@ -57,6 +61,7 @@ struct CoordinatorOptions {
   double drop_timeout = 1.0;    // s of silence after which a teammate is dropped
   double min_confidence = 0.5;  // confidence just before the drop
   double listen = 0.5;          // s a (re)starting robot only listens before taking a slot
+  double hand_back_penalty = 5.0;  // s a slot handed back by the sequencer is published with attitude 0
 };
 
 /// The age penalty: 1 up to `grace`, then linear down to `min_confidence`
@@ -86,6 +91,11 @@ class Coordinator {
   /// slot, unless teammates still claim it (release before acquire: then it
   /// holds none, waiting(), until they announce they left it).
   Allocation step(double now);
+  /// The sequencer handed the job `slot` back (a task's `hand_back`): this
+  /// robot leaves it at once (intention none) and publishes attitude 0 for
+  /// it until now + hand_back_penalty, so that every robot re-allocates it
+  /// from the same messages. False for an unknown slot name.
+  bool hand_back(const std::string& slot, double now);
 
   /// The allocation input from the team as known at `now`.
   TeamInput team_input(double now) const;
@@ -118,6 +128,9 @@ class Coordinator {
   bool waiting_ = false;
   double started_ = -1.0;  // time of the first publish
   std::size_t drops_ = 0;
+  std::map<int, double> handed_back_;  // slot -> end of its penalty
+  std::map<std::string, double> heard_;  // teammate -> newest stamp known through gossip
+  double newest(const std::string& id, const CoordinationMessage& m) const;
   Allocation last_;
 };
 

@@ -44,6 +44,12 @@ struct TaskLibrary {
   std::shared_ptr<FuzzyModel> model;
   double threshold = 0.5;          // a condition holds when value * reliability >= threshold
   std::map<std::string, TaskDefinition> tasks;
+  /// A job (the coordinator's slot name, e.g. `PassageToMate.passer`, or an
+  /// activity name) -> the tasks the sequencer runs for it, in order.
+  std::map<std::string, std::vector<std::string>> jobs;
+  /// The tasks of `job`: the slot's own entry, else its activity's (the
+  /// name before the '.'); nullptr when neither is defined.
+  const std::vector<std::string>* job_tasks(const std::string& job) const;
 };
 
 /// Throws common::ParseError with file:line:column (unknown keys, states,

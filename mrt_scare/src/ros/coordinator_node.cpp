@@ -43,7 +43,8 @@ struct CoordinatorNodeOptions {
         .get_non_negative("grace", o.coordination.grace)
         .get_positive("drop_timeout", o.coordination.drop_timeout)
         .get_positive("min_confidence", o.coordination.min_confidence)
-        .get_non_negative("listen", o.coordination.listen);
+        .get_non_negative("listen", o.coordination.listen)
+        .get_non_negative("hand_back_penalty", o.coordination.hand_back_penalty);
     p.check(!o.robot_id.empty(), "robot_id", "a non-empty string");
     p.check(o.rate <= 1000, "rate", "a number in (0, 1000]");
     p.check(o.coordination.grace < o.coordination.drop_timeout, "grace", "a number < ~drop_timeout");
@@ -63,6 +64,7 @@ class CoordinatorNode {
     pose_sub_ = nh.subscribe("pose", 10, &CoordinatorNode::on_pose, this);
     world_sub_ = nh.subscribe("world_crisp", 10, &CoordinatorNode::on_world, this);
     enable_sub_ = nh.subscribe("scare/enable", 5, &CoordinatorNode::on_enable, this);
+    hand_back_sub_ = nh.subscribe("scare/hand_back", 5, &CoordinatorNode::on_hand_back, this);
     timer_ = nh.createTimer(ros::Duration(1.0 / o.rate), &CoordinatorNode::on_timer, this);
     diag_.setHardwareID("scare_coordinator/" + o.robot_id);
     diag_.add("coordination", this, &CoordinatorNode::diagnose);
@@ -101,6 +103,13 @@ class CoordinatorNode {
   }
 
   void on_enable(const std_msgs::Bool& m) { enabled_ = m.data; }
+
+  /// The sequencer could not carry the job out: re-allocate it.
+  void on_hand_back(const std_msgs::String& m) {
+    if (!coord_.hand_back(m.data, ros::Time::now().toSec())) return drop("a hand-back of an unknown slot");
+    ROS_INFO("scare_coordinator: job '%s' handed back", m.data.c_str());
+    ++hand_backs_;
+  }
 
   void on_team(const mrt_msgs::CoordinationParameters& m) {
     if (!enabled_) return;
@@ -183,6 +192,7 @@ class CoordinatorNode {
     st.add("team size", coord_.team_size());
     st.add("teammates dropped", coord_.drops());
     st.add("job changes", changes_);
+    st.add("hand-backs", hand_backs_);
     st.add("dropped messages", dropped_);
   }
 
@@ -194,9 +204,9 @@ class CoordinatorNode {
   bool enabled_ = true;
   std::string job_;
   bool job_published_ = false;
-  std::size_t dropped_ = 0, changes_ = 0;
+  std::size_t dropped_ = 0, changes_ = 0, hand_backs_ = 0;
   ros::Publisher team_pub_, crisp_pub_, job_pub_;
-  ros::Subscriber team_sub_, pose_sub_, world_sub_, enable_sub_;
+  ros::Subscriber team_sub_, pose_sub_, world_sub_, enable_sub_, hand_back_sub_;
   ros::Timer timer_;
   diagnostic_updater::Updater diag_;
 };

@@ -16,7 +16,10 @@ uint8_t state_code(SequencerState s) {
     case SequencerState::kRunning: return mrt_msgs::TaskStatus::RUNNING;
     case SequencerState::kWaitingForPlan: return mrt_msgs::TaskStatus::WAITING_FOR_PLAN;
     case SequencerState::kDone: return mrt_msgs::TaskStatus::DONE;
-    case SequencerState::kGaveUp: return mrt_msgs::TaskStatus::GAVE_UP;
+    case SequencerState::kGaveUp:
+    case SequencerState::kAborted:     // no own code in TaskStatus: the event
+    case SequencerState::kHandedBack:  // (job_aborted, handed_back) tells which
+      return mrt_msgs::TaskStatus::GAVE_UP;
   }
   return 0;
 }
@@ -60,6 +63,9 @@ SequencerNode::SequencerNode(ros::NodeHandle& nh, const SequencerNodeOptions& o,
   path_sub_ = nh.subscribe("path", 5, &SequencerNode::on_path, this);
   pose_sub_ = nh.subscribe("pose", 20, &SequencerNode::on_pose, this);
   mode_sub_ = nh.subscribe("mode", 5, &SequencerNode::on_mode, this);
+  hand_back_pub_ = nh.advertise<std_msgs::String>("scare/hand_back", 5);
+  job_sub_ = nh.subscribe("scare/job", 5, &SequencerNode::on_job, this);
+  world_sub_ = nh.subscribe("world_crisp", 5, &SequencerNode::on_world, this);
   timer_ = nh.createTimer(ros::Duration(1.0 / o.rate), &SequencerNode::on_timer, this);
   diag_.setHardwareID("scare");
   diag_.add("sequencer", this, &SequencerNode::diagnose);
@@ -95,6 +101,41 @@ void SequencerNode::on_pose(const nav_msgs::Odometry& o) {
   pose_ = p;
   pose_time_ = ros::Time::now();
   if (have_pending_) apply_plan();
+  if (have_pending_job_) apply_job();
+}
+
+void SequencerNode::on_job(const std_msgs::String& j) {
+  if (j.data == seq_.job() && !have_pending_job_ && seq_.state() == SequencerState::kRunning) return;
+  // "" (no job, or waiting) stops a job, never a plan from the planner.
+  if (j.data.empty() && seq_.job().empty() && !have_pending_job_) return;
+  pending_job_ = j.data;
+  if (!pending_job_.empty() && !seq_.knows_job(pending_job_)) {
+    ++dropped_;
+    ROS_WARN("job '%s' is not defined in the task file: stopping", pending_job_.c_str());
+    pending_job_.clear();  // the robot must not go on with its previous job
+  }
+  have_pending_job_ = true;
+  if (pose_) apply_job();
+}
+
+void SequencerNode::apply_job() {
+  have_pending_job_ = false;
+  ROS_INFO("job '%s'", pending_job_.c_str());
+  handle(seq_.set_job(pending_job_, ros::Time::now().toSec(), *pose_));
+}
+
+void SequencerNode::on_world(const mrt_msgs::CrispDataArray& w) {
+  CrispMap world;
+  for (const auto& d : w.data) {
+    if (d.name.empty() || !std::isfinite(d.value) || !std::isfinite(d.reliability) || d.reliability < 0.0 ||
+        d.reliability > 1.0) {
+      ++dropped_;
+      ROS_WARN_THROTTLE(5, "dropped a malformed world crisp datum '%s'", d.name.c_str());
+      continue;
+    }
+    world[d.name] = {d.value, d.reliability};
+  }
+  seq_.set_world(std::move(world));
 }
 
 void SequencerNode::on_mode(const std_msgs::String& m) {
@@ -131,8 +172,13 @@ void SequencerNode::handle(const std::vector<SequencerEvent>& events) {
       r.failed_index = static_cast<uint32_t>(e.index);
       r.failed_x = e.point.x;
       r.failed_y = e.point.y;
-      r.reason = seq_.options().path_task.name + " timeout";
+      r.reason = e.task + " " + (e.reason.empty() ? "timeout" : e.reason);
       replan_pub_.publish(r);
+    }
+    if (e.type == SequencerEvent::Type::kHandedBack) {
+      std_msgs::String m;
+      m.data = seq_.job().empty() ? e.task : seq_.job();
+      hand_back_pub_.publish(m);
     }
     publish_status(to_string(e.type), &e);
   }
@@ -168,11 +214,11 @@ void SequencerNode::publish_status(const std::string& event, const SequencerEven
     s.goal_y = t->goal().y;
     if (pose_) set_goal_geometry(*pose_, t->goal(), s);
     s.elapsed = t->elapsed(now.toSec());
-    s.timeout = t->timeout();
+    s.timeout = seq_.active_timeout();
   }
-  if (e && e->type != SequencerEvent::Type::kPlanAccepted && e->type != SequencerEvent::Type::kModeChanged) {
+  if (e && !e->task.empty() && e->type != SequencerEvent::Type::kJobAccepted) {
     // The event's own task, which may have ended already.
-    s.task = seq_.options().path_task.name;
+    s.task = e->task;
     s.index = static_cast<uint32_t>(e->index);
     s.goal_x = e->point.x;
     s.goal_y = e->point.y;
@@ -191,6 +237,7 @@ void SequencerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
   st.summary(bad ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK,
              !pose_ ? "no pose yet" : to_string(seq_.state()));
   st.add("mode", to_string(seq_.mode()));
+  st.add("job", seq_.job());
   st.add("plans", seq_.plans());
   st.add("reached", seq_.reached());
   st.add("failed", seq_.failed());

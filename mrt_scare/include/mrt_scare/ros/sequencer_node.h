@@ -7,6 +7,7 @@
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PointStamped.h>
+#include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/PlanRequest.h>
 #include <mrt_msgs/TaskStatus.h>
 #include <nav_msgs/Odometry.h>
@@ -54,6 +55,9 @@ class SequencerNode {
   void apply_plan();
   void on_pose(const nav_msgs::Odometry& o);
   void on_mode(const std_msgs::String& m);
+  void on_job(const std_msgs::String& j);
+  void apply_job();
+  void on_world(const mrt_msgs::CrispDataArray& w);
   void on_timer(const ros::TimerEvent&);
   void handle(const std::vector<SequencerEvent>& events);
   void publish_goal();
@@ -68,10 +72,12 @@ class SequencerNode {
   ros::Time pose_time_;
   std::vector<Point2D> pending_;
   bool have_pending_ = false;
+  std::string pending_job_;
+  bool have_pending_job_ = false;
   std::size_t dropped_ = 0;
   unsigned ticks_ = 0;
-  ros::Publisher status_pub_, replan_pub_, goal_pub_;
-  ros::Subscriber path_sub_, pose_sub_, mode_sub_;
+  ros::Publisher status_pub_, replan_pub_, goal_pub_, hand_back_pub_;
+  ros::Subscriber path_sub_, pose_sub_, mode_sub_, job_sub_, world_sub_;
   ros::Timer timer_;
   diagnostic_updater::Updater diag_;
 };
