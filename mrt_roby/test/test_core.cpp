@@ -19,14 +19,17 @@ using mrt::scare::load_sequencer_options;
 
 TEST(TaskConfig, ShippedFileLoads) {
   const auto o = load_sequencer_options(MRT_ROBY_CONFIG "/tasks.yaml");
-  EXPECT_GT(o.path_task.timeout_limit(0.0), 0.0);
+  EXPECT_TRUE(o.machines);  // ReachPathPoint is a task machine
+  mrt::scare::Sequencer seq(o);
+  seq.set_plan({{10.0, 0.0}}, 0.0, {0.0, 0.0, 0.0});
+  EXPECT_GT(seq.active_timeout(), 0.0);
 }
 
-// The machine version of the task file gives the shipped file's numbers: a
+// The shipped machine file gives the single-state file's numbers: a
 // 10 m leg from the origin, 15 + 4 * 10 = 55 s; 70 cm from the point not
 // reached, 50 cm reached (within 0.6 m / ARRIVED [0, 60] cm).
 TEST(TaskConfig, MachineFileMatchesTheShippedOne) {
-  for (const char* file : {MRT_ROBY_CONFIG "/tasks.yaml", MRT_ROBY_CONFIG "/tasks_machine.yaml"}) {
+  for (const char* file : {MRT_ROBY_CONFIG "/tasks.yaml", MRT_ROBY_TEST_DATA "/tasks_single_state.yaml"}) {
     mrt::scare::Sequencer seq(load_sequencer_options(file));
     seq.set_plan({{10.0, 0.0}}, 0.0, {0.0, 0.0, 0.0});
     EXPECT_DOUBLE_EQ(seq.active_timeout(), 55.0) << file;
@@ -34,7 +37,7 @@ TEST(TaskConfig, MachineFileMatchesTheShippedOne) {
     EXPECT_EQ(seq.update(2.0, {9.5, 0.0, 0.0}).size(), 2u) << file;  // succeeded, route completed
     EXPECT_EQ(seq.state(), mrt::scare::SequencerState::kDone) << file;
   }
-  EXPECT_TRUE(load_sequencer_options(MRT_ROBY_CONFIG "/tasks_machine.yaml").machines);
+  EXPECT_FALSE(load_sequencer_options(MRT_ROBY_TEST_DATA "/tasks_single_state.yaml").machines);
 }
 
 TEST(RoadMap, ParsesAndPlans) {

@@ -131,6 +131,8 @@ class CoordinatorNode {
     c.attitude = m.attitude;
     c.opportunity = m.opportunity;
     for (double t : m.time) c.time.push_back(t < 0.0 ? std::numeric_limits<double>::infinity() : t);
+    ok = ok && m.heard_ids.size() == m.heard_stamps.size();
+    for (std::size_t i = 0; ok && i < m.heard_ids.size(); ++i) c.heard.emplace_back(m.heard_ids[i], m.heard_stamps[i]);
     if (!ok || !coord_.receive(c)) drop("a team message that does not match the activity file");
   }
 
@@ -151,6 +153,10 @@ class CoordinatorNode {
     m.attitude = c.attitude;
     for (double t : c.time) m.time.push_back(std::isfinite(t) ? t : -1.0);
     m.opportunity = c.opportunity;
+    for (const auto& [id, stamp] : c.heard) {
+      m.heard_ids.push_back(id);
+      m.heard_stamps.push_back(stamp);
+    }
     team_pub_.publish(m);
     coord_.step(now.toSec());
     publish_outputs(now);
