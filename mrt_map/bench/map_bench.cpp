@@ -12,6 +12,7 @@
 #include <memory>
 #include <tuple>
 
+#include "mrt_common/cli.h"
 #include "mrt_map/world_model.h"
 #include "bench_diag.h"
 #include "team_sim.h"
@@ -306,10 +307,17 @@ void cycle_time(const ConceptualModel& model) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const double minutes = argc > 1 ? std::atof(argv[1]) : 10.0;
-  const unsigned seed = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1u;
-  const ConceptualModel model = ConceptualModel::load(argc > 3 ? argv[3] : MRT_MAP_CONFIG_DIR "/robocup.yaml");
+  CLI::App app{"map_bench: MAP's cycle time (50 objects x 5 robots) and a simulated team run on the MSL field"};
+  double minutes = 10.0;
+  unsigned seed = 1;
+  std::string model_file = MRT_MAP_CONFIG_DIR "/robocup.yaml";
+  app.add_option("minutes", minutes, "simulated minutes of the team run")->check(CLI::PositiveNumber);
+  app.add_option("seed", seed, "random seed");
+  app.add_option("model", model_file, "conceptual model YAML")->check(CLI::ExistingFile);
+  const int rc = mrt::cli::parse_cli(app, argc, argv);
+  if (rc >= 0) return rc;
+  const ConceptualModel model = ConceptualModel::load(model_file);
   cycle_time(model);
-  team_run(model, minutes > 0 ? minutes : 10.0, seed);
+  team_run(model, minutes, seed);
   return 0;
 }

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/cli.h"
 #include "mrt_recvision/detector.h"
 #include "mrt_sim/camera.h"
 #include "mrt_sim/sensors.h"
@@ -145,12 +146,11 @@ void report(const Condition& c, const Tally& a) {
 int main(int argc, char** argv) {
   int frames = 1000;
   std::string calib = MRT_RECVISION_CONFIG_DIR "/msl_omni.yaml", world = MRT_SIM_WORLD;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--frames") frames = std::max(1, std::atoi(argv[i + 1]));
-    else if (a == "--calib") calib = argv[i + 1];
-    else if (a == "--world") world = argv[i + 1];
-  }
+  CLI::App app{"recvision_bench: RecVision's time per frame and detection figures on frames rendered by mrt_sim"};
+  app.add_option("--frames", frames, "rendered frames per condition")->check(CLI::PositiveNumber);
+  app.add_option("--calib", calib, "calibration file")->check(CLI::ExistingFile);
+  app.add_option("--world", world, "mrt_sim world file (MSL field)");
+  if (const int code = mrt::cli::parse_cli(app, argc, argv); code >= 0) return code;
   if (world.empty()) {
     std::fprintf(stderr, "recvision_bench: give --world (mrt_sim's worlds/msl_field.yaml)\n");
     return 2;

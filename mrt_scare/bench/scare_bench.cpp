@@ -4,16 +4,20 @@
 // the coordination part on 500 situations / cycles.
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 
 #include "coordination_bench.h"
 
+#include "mrt_common/cli.h"
 #include "mrt_scare/sequencer.h"
 
 using Clock = std::chrono::steady_clock;
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  CLI::App app{"scare_bench: the sequencer's update cost and SCARE's coordination figures"};
+  bool quick = false;
+  app.add_flag("--quick", quick, "coordination on 500 situations / cycles only");
+  const int rc = mrt::cli::parse_cli(app, argc, argv);
+  if (rc >= 0) return rc;
   using namespace mrt::scare;
   // Sequencer: a 1000-point plan driven through by a pose on the points.
   std::vector<Point2D> plan;
