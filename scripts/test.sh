@@ -7,7 +7,11 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 ensure_setup
 build_workspace
-build_workspace tests
+# --force-cmake: catkin caches the test environment (PYTHONPATH,
+# LD_LIBRARY_PATH) when it configures, and keeps only devel directories
+# that exist then; on a fresh clone devel/lib/python3/dist-packages (the
+# generated mrt_msgs Python) exists only after the first build.
+build_workspace --force-cmake tests
 
 # Each run gets its own ROS master port and clean results.
 export ROS_MASTER_URI="http://127.0.0.1:$(free_port)"

@@ -15,6 +15,8 @@
 //    wheels, the pseudo-inverse for four).
 #pragma once
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -83,33 +85,29 @@ inline void require_wheel_count(std::size_t want, std::size_t got) {
                                 " wheel speeds, got " + std::to_string(got));
 }
 
-/// Inverts the 3x3 normal matrix J^T J of an omni base (rows of J:
-/// (-sin a_i, cos a_i, L)), by the adjugate. Throws std::invalid_argument
-/// when the wheel directions do not span the plane (fewer than three wheels,
-/// or all wheels on one line through the centre).
-inline void omni_normal_inverse(double wheel_distance, const std::vector<double>& wheel_angles,
-                                double inv[3][3]) {
-  double m[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  for (double a : wheel_angles) {
-    const double row[3] = {-std::sin(a), std::cos(a), wheel_distance};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) m[r][c] += row[r] * row[c];
-  }
-  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  const double scale = m[0][0] * m[1][1] * m[2][2];
-  if (!(std::fabs(det) > 1e-9 * std::max(1.0, std::fabs(scale))))
-    throw std::invalid_argument("wheel_angles: the omni wheel directions do not span the plane");
-  inv[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
-  inv[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
-  inv[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
-  inv[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / det;
-  inv[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
-  inv[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
-  inv[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / det;
-  inv[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
-  inv[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
+/// The design matrix J of an omni base, one row (-sin a_i, cos a_i, L) per
+/// wheel: J t = r w for a body twist t = (vx, vy, omega).
+inline Eigen::MatrixX3d omni_jacobian(double wheel_distance, const std::vector<double>& wheel_angles) {
+  Eigen::MatrixX3d j(static_cast<Eigen::Index>(wheel_angles.size()), 3);
+  for (std::size_t i = 0; i < wheel_angles.size(); ++i)
+    j.row(static_cast<Eigen::Index>(i)) << -std::sin(wheel_angles[i]), std::cos(wheel_angles[i]), wheel_distance;
+  return j;
+}
+
+/// Inverse of the 3x3 normal matrix J^T J of an omni base. Throws
+/// std::invalid_argument when the wheel directions do not span the plane
+/// (fewer than three wheels, or all wheels on one line through the centre):
+/// |det| not above 1e-9 times the product of the diagonal (at least 1).
+inline Eigen::Matrix3d omni_normal_inverse(double wheel_distance, const std::vector<double>& wheel_angles) {
+  const Eigen::MatrixX3d j = omni_jacobian(wheel_distance, wheel_angles);
+  const Eigen::Matrix3d m = j.transpose() * j;
+  const double scale = m(0, 0) * m(1, 1) * m(2, 2);
+  Eigen::Matrix3d inv;
+  double det = 0.0;
+  bool invertible = false;
+  m.computeInverseAndDetWithCheck(inv, det, invertible, 1e-9 * std::max(1.0, std::fabs(scale)));
+  if (!invertible) throw std::invalid_argument("wheel_angles: the omni wheel directions do not span the plane");
+  return inv;
 }
 
 }  // namespace detail
@@ -127,9 +125,8 @@ inline Twist2D differential_forward(double wheel_radius, double track, const std
 /// Whether omni wheels at `wheel_angles`, `wheel_distance` from the centre,
 /// determine the body twist (at least three wheels whose directions span the plane).
 inline bool omni_spans_plane(double wheel_distance, const std::vector<double>& wheel_angles) {
-  double inv[3][3];
   try {
-    detail::omni_normal_inverse(wheel_distance, wheel_angles, inv);
+    detail::omni_normal_inverse(wheel_distance, wheel_angles);
   } catch (const std::invalid_argument&) {
     return false;
   }
@@ -143,18 +140,10 @@ inline bool omni_spans_plane(double wheel_distance, const std::vector<double>& w
 inline Twist2D omni_forward(double wheel_radius, double wheel_distance,
                             const std::vector<double>& wheel_angles, const std::vector<double>& w) {
   detail::require_wheel_count(wheel_angles.size(), w.size());
-  double inv[3][3];
-  detail::omni_normal_inverse(wheel_distance, wheel_angles, inv);
-  double b[3] = {0, 0, 0};  // J^T (r w)
-  for (std::size_t i = 0; i < w.size(); ++i) {
-    const double v = wheel_radius * w[i];
-    b[0] += -std::sin(wheel_angles[i]) * v;
-    b[1] += std::cos(wheel_angles[i]) * v;
-    b[2] += wheel_distance * v;
-  }
-  double out[3];
-  for (int r = 0; r < 3; ++r) out[r] = inv[r][0] * b[0] + inv[r][1] * b[1] + inv[r][2] * b[2];
-  return Twist2D{out[0], out[1], out[2]};
+  const Eigen::VectorXd rw = wheel_radius * Eigen::Map<const Eigen::VectorXd>(w.data(), static_cast<Eigen::Index>(w.size()));
+  const Eigen::Vector3d t = detail::omni_normal_inverse(wheel_distance, wheel_angles) *
+                            (detail::omni_jacobian(wheel_distance, wheel_angles).transpose() * rw);
+  return Twist2D{t(0), t(1), t(2)};
 }
 
 /// Body twist from wheel speeds (rad/s), least squares for more than three
