@@ -201,7 +201,9 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
   double next_team = 0.0;
   AnchorCounts counts;
   const long steps = static_cast<long>(minutes * 60.0 / kDt);
+  mrt::cli::Progress progress("map_bench", static_cast<double>(steps));
   for (long k = 0; k < steps; ++k) {
+    progress.update(static_cast<double>(k));
     const double t = k * kDt;
     sim.step(kDt);
     while (!network.empty() && network.front().deliver <= t) {

@@ -82,7 +82,10 @@ int run(const Args& args) {
   out << "stamp,robot,id,class,x,y,vx,vy,cov_xx,cov_xy,cov_yy,reliability,sources\n" << std::setprecision(9);
   std::size_t updates = 0, no_pose = 0;
   rosbag::View view(bag, rosbag::TopicQuery(topics));
+  mrt::cli::Progress progress("map_eval", view.size());
+  double done = 0.0;
   for (const rosbag::MessageInstance& m : view) {
+    progress.update(++done);
     auto p = m.instantiate<mrt_msgs::Percept>();
     if (!p) continue;
     const std::string robot = m.getTopic().substr(1, m.getTopic().find('/', 1) - 1);

@@ -171,7 +171,9 @@ int main(int argc, char** argv) {
   std::vector<double> t_rv, t_base, w_rv;
   cv::setNumThreads(1);  // one core, for both pipelines
   cv::Mat rgb, lit, hsv, mask;
+  mrt::cli::Progress progress("recvision_bench", frames);
   for (int i = 0; i < frames; ++i) {
+    progress.update(i);
     const State st = move(i, w);
     bool visible = false;
     for (const auto& s : sim::vision_percepts(w, st.others, st.robot, vis))

@@ -47,7 +47,9 @@ int run_bag(Detector& det, const std::string& path, const std::string& topic) {
   const std::string t = pick_topic(bag, topic);
   rosbag::View view(bag, rosbag::TopicQuery(t));
   long frames = 0, dropped = 0;
+  mrt::cli::Progress progress("recvision_run", view.size());
   for (const rosbag::MessageInstance& m : view) {
+    progress.update(static_cast<double>(frames + dropped + 1));
     const auto img = m.instantiate<sensor_msgs::Image>();
     if (!img) continue;
     Frame f;
