@@ -239,6 +239,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed) {
     }
     switches += identity_switches(*team[0], opp_class, sim, last_id, was_matched, switch_diag);
   }
+  progress.finish();
   const auto [team_all, best_alone_rmse, best_alone_avail] = summarise(team_stats, alone_stats);
   std::printf("map_sim_minutes: %.1f min\n", minutes);
   std::printf("map_ball_rmse_team_within_5m: %.4f m\n", team_all.rmse());

@@ -199,6 +199,7 @@ int main(int argc, char** argv) {
       tally(w, st, dets, visible, truth, acc[k]);
     }
   }
+  progress.finish();
   const double m_rv = median(t_rv), m_base = median(t_base);
   std::printf("frame_median: %.3f ms\n", m_rv);
   std::printf("frame_median_wall: %.3f ms\n", median(w_rv));
