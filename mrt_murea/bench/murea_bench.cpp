@@ -45,7 +45,9 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
   std::vector<double> times, cells, sizes, err_xy, err_t, est_xy, est_t;
   std::vector<Frame> frames;
   int correct = 0, flagged = 0, timeouts = 0;
+  mrt::cli::Progress progress("murea_bench " + name, n);
   for (int i = 0; i < n; ++i) {
+    progress.update(i);
     Frame f;
     f.truth = mrt::common::Pose2D(ux(rng), uy(rng), ut(rng));
     const mrt::common::Pose2D mirror(-f.truth.x, -f.truth.y, f.truth.theta + kPi);
@@ -67,6 +69,7 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
     est_t.push_back(mrt::common::rad_to_deg(std::abs(angle_diff(r.estimate.mean.theta, ref.theta))));
     frames.push_back(std::move(f));
   }
+  progress.finish();
   const double pct = 100.0 / std::max(1, n);
   std::cout << name << "_poses: " << n << " count\n"
             << name << "_correct_and_flagged_ambiguous: " << correct * pct << " %\n"
@@ -167,7 +170,9 @@ int main(int argc, char** argv) {
   double t_search = 0.0, t_exh = 0.0;
   int identical = 0;
   const int checked = std::min(m, n);
+  mrt::cli::Progress progress("murea_bench exhaustive", checked);
   for (int i = 0; i < checked; ++i) {
+    progress.update(i);
     const mrt::murea::Result e = loc.exhaustive(frames[i].percepts);
     t_exh += e.time_ms;
     t_search += frames[i].result.time_ms;
@@ -175,6 +180,7 @@ int main(int argc, char** argv) {
     else std::cerr << "NOT EXACT: frame " << i << " search " << frames[i].result.best.evidence << " exhaustive "
                    << e.best.evidence << '\n';
   }
+  progress.finish();
   std::cout << "exhaustive_checked: " << checked << " count\n"
             << "exhaustive_identical_best_evidence: " << identical << " count\n"
             << "exhaustive_time_mean: " << t_exh / std::max(1, checked) << " ms\n"

@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 
+#include "mrt_common/cli.h"
 #include "mrt_scare/situation.h"
 
 namespace mrt::scare::bench {
@@ -120,7 +121,9 @@ void utility_figures(const ActivitySet& set, int n) {
   std::mt19937 rng(1);
   double sum_opt = 0, sum_exact = 0, sum_local = 0, sum_greedy = 0, t_alloc = 0, t_exh = 0;
   std::vector<double> times;
+  mrt::cli::Progress progress("scare_bench situations", n);
   for (int k = 0; k < n; ++k) {
+    progress.update(k);
     const TeamInput in = team_input(set, random_situation(rng));
     auto t0 = Clock::now();
     const double exact = al.allocate(in).utility;  // kAuto: exact for 5 robots
@@ -136,6 +139,7 @@ void utility_figures(const ActivitySet& set, int n) {
     t_exh += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     sum_opt += ex.best;
   }
+  progress.finish();
   std::printf("coordination_allocation_cycle_mean: %.3f ms\n", t_alloc / n);
   std::sort(times.begin(), times.end());
   std::printf("coordination_allocation_cycle_median: %.3f ms\n", times[times.size() / 2]);

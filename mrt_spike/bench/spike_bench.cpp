@@ -148,7 +148,12 @@ void run_dir(const std::string& dir, const std::vector<int>& idx, const BenchOpt
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".map" && fs::exists(e.path().string() + ".scen")) maps.push_back(e.path().string());
   std::sort(maps.begin(), maps.end());
-  for (const auto& m : maps) bench_map(m, m + ".scen", idx, b);
+  mrt::cli::Progress progress("spike_bench maps", static_cast<double>(maps.size()));
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    progress.update(static_cast<double>(i));
+    progress.finish();  // the map's figures follow on their own lines
+    bench_map(maps[i], maps[i] + ".scen", idx, b);
+  }
 }
 
 }  // namespace
