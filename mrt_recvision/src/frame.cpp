@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <stdexcept>
 
 namespace mrt::recvision {
@@ -43,18 +44,27 @@ bool ImageFileSource::next(Frame& out) {
 }
 
 CameraSource::CameraSource(const std::string& device, int width, int height) {
-  bool numeric = !device.empty() && device.find_first_not_of("0123456789") == std::string::npos;
-  const bool ok = numeric ? capture_.open(std::stoi(device), cv::CAP_V4L2) : capture_.open(device, cv::CAP_V4L2);
-  if (!ok) throw std::runtime_error(device + ": cannot open camera");
-  capture_.set(cv::CAP_PROP_FRAME_WIDTH, width);
-  capture_.set(cv::CAP_PROP_FRAME_HEIGHT, height);
+  std::error_code ec;
+  file_ = std::filesystem::is_regular_file(device, ec);
+  const bool numeric = !device.empty() && device.find_first_not_of("0123456789") == std::string::npos;
+  bool ok = false;
+  if (file_)
+    ok = capture_.open(device, cv::CAP_ANY);
+  else
+    ok = numeric ? capture_.open(std::stoi(device), cv::CAP_V4L2) : capture_.open(device, cv::CAP_V4L2);
+  if (!ok) throw std::runtime_error(device + (file_ ? ": cannot read video" : ": cannot open camera (V4L2)"));
+  if (!file_) {
+    capture_.set(cv::CAP_PROP_FRAME_WIDTH, width);
+    capture_.set(cv::CAP_PROP_FRAME_HEIGHT, height);
+  }
 }
 
 bool CameraSource::next(Frame& out) {
   cv::Mat bgr;
   if (!capture_.read(bgr) || bgr.empty()) return false;
   cv::cvtColor(bgr, out.rgb, cv::COLOR_BGR2RGB);
-  out.stamp = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  out.stamp = file_ ? capture_.get(cv::CAP_PROP_POS_MSEC) / 1000.0
+                    : std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   return true;
 }
 

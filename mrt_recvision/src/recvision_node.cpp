@@ -4,6 +4,8 @@
 // each Detection a PerceptObject with the attributes of mrt_sim's percepts.
 // The viewpoint's mount is taken from tf (base_frame <- the image's
 // frame_id), falling back to the calibration file's `mount:`.
+// With ~device set, the driver sub-module reads a V4L2 camera (or a video
+// file) itself and publishes its frames on camera/image_raw.
 // Topics, parameters and diagnostics: README.md.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <image_transport/image_transport.h>
@@ -21,6 +23,7 @@
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_recvision/detector.h"
+#include "mrt_recvision/frame.h"
 
 namespace mrt::recvision {
 namespace {
@@ -105,6 +108,17 @@ visualization_msgs::MarkerArray to_markers(const std::vector<Detection>& dets, c
   return arr;
 }
 
+sensor_msgs::Image to_image(const cv::Mat& rgb, const std_msgs::Header& h) {
+  sensor_msgs::Image img;
+  img.header = h;
+  img.encoding = "rgb8";
+  img.width = rgb.cols;
+  img.height = rgb.rows;
+  img.step = rgb.cols * 3;
+  img.data.assign(rgb.data, rgb.data + rgb.total() * 3);
+  return img;
+}
+
 class RecVisionNode {
  public:
   RecVisionNode(ros::NodeHandle nh, ros::NodeHandle pnh) : it_(nh), tf_listener_(tf_buffer_), updater_(nh, pnh) {
@@ -122,7 +136,19 @@ class RecVisionNode {
     percepts_pub_ = nh.advertise<mrt_msgs::Percept>("percepts", 10);
     if (debug_) debug_pub_ = it_.advertise("camera/debug_image", 1);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("vision_markers", 2);
-    image_sub_ = it_.subscribe("camera/image_raw", 2, &RecVisionNode::on_image, this);
+    std::string device;
+    double rate = 30.0;
+    params.get("device", device).get_positive("device_rate", rate);
+    camera_frame_ = prefix + "omni_mirror";
+    params.get("camera_frame", camera_frame_);
+    if (device.empty()) {
+      image_sub_ = it_.subscribe("camera/image_raw", 2, &RecVisionNode::on_image, this);
+    } else {  // the driver sub-module reads the camera (or a video file) itself
+      const auto& cam = detector_->calibration().camera;
+      source_ = std::make_unique<CameraSource>(device, cam.width, cam.height_px);  // throws naming the device
+      raw_pub_ = it_.advertise("camera/image_raw", 2);
+      grab_timer_ = nh.createWallTimer(ros::WallDuration(1.0 / rate), [this](const ros::WallTimerEvent&) { grab(); });
+    }
     updater_.setHardwareID("recvision");
     updater_.add("frames", this, &RecVisionNode::diagnose);
     diag_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { updater_.update(); });
@@ -138,19 +164,47 @@ class RecVisionNode {
       ROS_WARN_THROTTLE(5.0, "recvision: frame dropped: %s", why.c_str());
       return;
     }
+    process(f, msg->header);
+  }
+
+  // Device mode: one frame from the camera (blocks until it arrives),
+  // published raw for recording, then processed like a topic's frame.
+  void grab() {
+    // A video file is played once, from when someone listens to the percepts.
+    if (source_->is_file() && percepts_pub_.getNumSubscribers() == 0) return;
+    Frame f;
+    if (!source_->next(f)) {
+      ++device_failures_;
+      if (source_->is_file()) {
+        ROS_INFO("recvision: end of the video");
+        grab_timer_.stop();
+      } else {
+        ROS_WARN_THROTTLE(5.0, "recvision: the camera gave no frame");
+      }
+      return;
+    }
+    std_msgs::Header h;
+    h.stamp = ros::Time::now();
+    h.frame_id = camera_frame_;
+    if (raw_pub_.getNumSubscribers() > 0) raw_pub_.publish(to_image(f.rgb, h));
+    process(f, h);
+  }
+
+  void process(const Frame& f, const std_msgs::Header& header) {
+    std::string why;
     if (!detector_->accepts(f, why)) {
       ++dropped_size_;
       ROS_WARN_THROTTLE(5.0, "recvision: frame dropped: %s", why.c_str());
       return;
     }
-    update_mount(msg->header.frame_id);
+    update_mount(header.frame_id);
     const auto t0 = std::chrono::steady_clock::now();
     const auto dets = detector_->process(f);
     last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     ++frames_;
-    percepts_pub_.publish(to_percept(dets, msg->header, base_frame_, robot_));
-    if (debug_ && debug_pub_.getNumSubscribers() > 0) publish_debug(f, dets, msg->header);
-    if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(to_markers(dets, msg->header, base_frame_));
+    percepts_pub_.publish(to_percept(dets, header, base_frame_, robot_));
+    if (debug_ && debug_pub_.getNumSubscribers() > 0) publish_debug(f, dets, header);
+    if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(to_markers(dets, header, base_frame_));
     updater_.update();
   }
 
@@ -170,14 +224,7 @@ class RecVisionNode {
   void publish_debug(const Frame& f, const std::vector<Detection>& dets, const std_msgs::Header& h) {
     cv::Mat out;
     detector_->draw(f, dets, out);
-    sensor_msgs::Image img;
-    img.header = h;
-    img.encoding = "rgb8";
-    img.width = out.cols;
-    img.height = out.rows;
-    img.step = out.cols * 3;
-    img.data.assign(out.data, out.data + out.total() * 3);
-    debug_pub_.publish(img);
+    debug_pub_.publish(to_image(out, h));
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
@@ -192,11 +239,15 @@ class RecVisionNode {
     s.add("dropped: wrong size", dropped_size_);
     s.add("last processing time (ms)", last_ms_);
     s.add("mount from tf", mount_from_tf_);
+    if (source_) s.add("device read failures", device_failures_);
   }
 
   image_transport::ImageTransport it_;
   image_transport::Subscriber image_sub_;
-  image_transport::Publisher debug_pub_;
+  image_transport::Publisher debug_pub_, raw_pub_;
+  std::unique_ptr<CameraSource> source_;
+  ros::WallTimer grab_timer_;
+  std::string camera_frame_;
   ros::Publisher percepts_pub_, markers_pub_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
@@ -205,7 +256,7 @@ class RecVisionNode {
   std::unique_ptr<Detector> detector_;
   std::string base_frame_, robot_;
   bool use_tf_ = true, debug_ = true, mount_from_tf_ = false;
-  long frames_ = 0, dropped_encoding_ = 0, dropped_size_ = 0;
+  long frames_ = 0, dropped_encoding_ = 0, dropped_size_ = 0, device_failures_ = 0;
   double last_ms_ = 0;
 };
 

@@ -53,14 +53,19 @@ class ImageFileSource : public FrameSource {
 
 /// A V4L2 camera (device number or path such as /dev/video0) through
 /// OpenCV's VideoCapture, asked for `width` x `height`; stamps are
-/// monotonic seconds. Throws std::runtime_error if the device cannot be opened.
+/// monotonic seconds. A `device` that is a regular file is a recorded video
+/// read through the same VideoCapture (FFmpeg), stamped with its frames'
+/// positions in seconds. Throws std::runtime_error naming the device if it
+/// cannot be opened.
 class CameraSource : public FrameSource {
  public:
   CameraSource(const std::string& device, int width, int height);
   bool next(Frame& out) override;
+  bool is_file() const { return file_; }
 
  private:
   cv::VideoCapture capture_;
+  bool file_ = false;
 };
 
 }  // namespace mrt::recvision
