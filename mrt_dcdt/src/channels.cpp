@@ -150,8 +150,9 @@ std::unique_ptr<Channel> make_serial_channel(const ChannelConfig& c, const Chann
   return ch;
 }
 
-std::unique_ptr<Channel> make_finder_channel(int peer_id, bool dialling, std::shared_ptr<FinderSlot> slot,
-                                             const ChannelOptions& o, Channel::ReceiveFn rx) {
+std::unique_ptr<Channel> make_finder_channel(const std::string& name, bool dialling,
+                                             std::shared_ptr<FinderSlot> slot, const ChannelOptions& o,
+                                             Channel::ReceiveFn rx) {
   StreamLink::ConnectFn connect;
   StreamLink::ReplacedFn replaced;
   if (dialling) {
@@ -185,7 +186,7 @@ std::unique_ptr<Channel> make_finder_channel(int peer_id, bool dialling, std::sh
     replaced = [slot] { return slot->fd_waiting.load() || slot->forget.load(); };
   }
   auto ch = std::make_unique<StreamChannel>(
-      std::string(dialling ? "finder -> agora " : "finder <- agora ") + std::to_string(peer_id), o,
+      name, o,
       std::move(connect), std::move(rx), /*lossy=*/false, std::move(replaced));
   return ch;
 }

@@ -81,13 +81,13 @@ std::vector<int> Finder::peer_ids() {
   return ids;
 }
 
-Finder::Link& Finder::link_of(int peer, bool dialling) {
+Finder::Link& Finder::link_of(int peer, bool dialling, const std::string& name) {
   Link& k = links_[peer];
   if (!k.slot) {
     k.slot = std::make_shared<FinderSlot>();
     k.dialling = dialling;
     auto rx = [a = agora_](std::shared_ptr<Msg> m, Channel* ch) { a->route(std::move(m), Source{Source::CHANNEL, ch}); };
-    new_channels_.push_back(make_finder_channel(peer, dialling, k.slot, agora_->options().channel, rx));
+    new_channels_.push_back(make_finder_channel(name, dialling, k.slot, agora_->options().channel, rx));
   }
   return k;
 }
@@ -100,7 +100,9 @@ void Finder::on_beacon(const Beacon& b) {
   const auto now = Clock::now();
   seen_[b.agora_id] = now;
   if (agora_->agora_id() < b.agora_id && b.tcp_port != 0) {
-    Link& k = link_of(b.agora_id, true);
+    Link& k = link_of(b.agora_id, true,
+                      "finder -> " + b.tcp_addr + ":" + std::to_string(b.tcp_port) + " (agora " +
+                          std::to_string(b.agora_id) + ")");
     k.seen = now;
     std::lock_guard<std::mutex> sl(k.slot->mu);
     k.slot->addr = b.tcp_addr;
@@ -127,7 +129,7 @@ bool Finder::on_accepted_readable(Accepted& a) {
     if (f->kind != FrameKind::HELLO || !decode_hello_body(f->body, &h)) continue;
     std::lock_guard<std::mutex> l(mutex_);
     if (h.agora_id == agora_->agora_id() || (links_.count(h.agora_id) && links_[h.agora_id].dialling)) break;
-    Link& k = link_of(h.agora_id, false);
+    Link& k = link_of(h.agora_id, false, "finder <- agora " + std::to_string(h.agora_id));
     k.seen = Clock::now();
     std::lock_guard<std::mutex> sl(k.slot->mu);
     if (k.slot->fd >= 0) ::close(k.slot->fd);  // an older connection nobody took yet

@@ -41,9 +41,10 @@ struct FinderSlot {
   ~FinderSlot();
 };
 
-/// A Finder channel to Agora `peer_id` (mode LINK, level 0).
-std::unique_ptr<Channel> make_finder_channel(int peer_id, bool dialling, std::shared_ptr<FinderSlot> slot,
-                                             const ChannelOptions& o, Channel::ReceiveFn rx);
+/// A Finder channel to a peer (mode LINK, level 0), named `name` in its stats.
+std::unique_ptr<Channel> make_finder_channel(const std::string& name, bool dialling,
+                                             std::shared_ptr<FinderSlot> slot, const ChannelOptions& o,
+                                             Channel::ReceiveFn rx);
 
 class Finder {
  public:
@@ -76,7 +77,7 @@ class Finder {
   /// over to its peer's channel, or closed).
   bool on_accepted_readable(Accepted& a);
   /// Caller holds mutex_. Creates the channel of `peer` if it has none.
-  Link& link_of(int peer, bool dialling);
+  Link& link_of(int peer, bool dialling, const std::string& name);
   /// Ends the channels of peers not heard of for forget_ms and not connected.
   void forget_silent_peers();
 
