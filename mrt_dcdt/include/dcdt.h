@@ -118,15 +118,14 @@ class DCDT_Member : public mrt::dcdt::Member {
   DCDT_Msg* CreateMsg(int type, int delivery_warranty) { return new DCDT_Msg(create_msg(type, delivery_warranty)); }
   DCDT_Msg* CreateMsg(int type) { return new DCDT_Msg(create_msg(type)); }
   /// Shares a message made by CreateMsg (and deletes its handle), or a copy
-  /// of the current received message.
-  void ShareMsg(DCDT_Msg* msg) {
-    if (!msg) return;
-    if (msg == current_.get()) {
-      share_msg(new mrt::dcdt::Msg(*msg->view_));
-      return;
-    }
+  /// of the current received message. The manual's ShareMsg returns nothing;
+  /// this one returns share_msg's answer (false: a guaranteed message was
+  /// refused by a full mailbox or link), which legacy callers may ignore.
+  bool ShareMsg(DCDT_Msg* msg) {
+    if (!msg) return false;
+    if (msg == current_.get()) return share_msg(new mrt::dcdt::Msg(*msg->view_));
     std::unique_ptr<DCDT_Msg> handle(msg);
-    share_msg(handle->owned_ ? handle->owned_.release() : new mrt::dcdt::Msg(*handle->view_));
+    return share_msg(handle->owned_ ? handle->owned_.release() : new mrt::dcdt::Msg(*handle->view_));
   }
   DCDT_Msg* ReceiveMsg() {
     const mrt::dcdt::Msg* m = receive_msg();

@@ -313,14 +313,16 @@ bool Agora::route(std::shared_ptr<Msg> msg, const Source& src) {
   }
   ++routed_;
   MsgPtr m = std::move(msg);
-  const bool delivered = post_office_->post(m);
+  bool delivered = post_office_->post(m);
   if (inner_ && src.kind != Source::INNER) inner_->send(*m);
   std::lock_guard<std::mutex> l(channels_mutex_);
   for (auto& ch : channels_) {
     if (ch.get() == src.channel || ch->dead()) continue;
-    if (src.kind == Source::MEMBER ||
-        (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level))
-      ch->send(m);
+    if ((src.kind == Source::MEMBER || (ch->mode == ChannelMode::BRIDGE && m->header().hops <= ch->level)) &&
+        !ch->send(m)) {
+      ++channel_refused_;
+      delivered = false;
+    }
   }
   return delivered;
 }
@@ -342,7 +344,10 @@ void Agora::add_channel(std::unique_ptr<Channel> c) {
       channels_.push_back(std::move(c));
     }
   }
-  for (auto& d : dead) d->stop();
+  for (auto& d : dead) {
+    d->stop();
+    channels_lost_ += d->stats().pending;  // a forgotten Finder peer's messages
+  }
 }
 
 bool Agora::has_connected_peer(int id) {
@@ -360,6 +365,8 @@ AgoraStats Agora::stats() {
   s.routed = routed_;
   s.duplicates = duplicates_;
   s.hop_limited = hop_limited_;
+  s.channel_refused = channel_refused_;
+  s.channels_lost = channels_lost_;
   s.mailbox_dropped = post_office_->mailbox_drops();
   s.guaranteed_refused = post_office_->guaranteed_refused();
   if (inner_) {

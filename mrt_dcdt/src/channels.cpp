@@ -5,6 +5,7 @@
 #include <arpa/inet.h>
 #include <unistd.h>
 
+#include "finder.h"
 #include "mrt_common/serial_port.h"
 #include "mrt_dcdt/channel.h"
 #include "stream_link.h"
@@ -29,11 +30,11 @@ class IpChannel : public Channel {
                       std::make_pair(ntohl(Addr(cfg.remote_addr)), cfg.remote_port);
     StreamLink::ConnectFn fn;
     if (dial) {
-      fn = [this](const std::atomic<bool>&) {
+      fn = [this](const std::atomic<bool>&, std::vector<uint8_t>*) {
         return net::tcp_connect(cfg_.local_addr, cfg_.remote_addr, cfg_.remote_port, 200);
       };
     } else {
-      fn = [this](const std::atomic<bool>&) {
+      fn = [this](const std::atomic<bool>&, std::vector<uint8_t>*) {
         if (listen_fd_ < 0) listen_fd_ = net::tcp_listen(cfg_.local_addr, cfg_.local_port);
         if (listen_fd_ < 0) return -1;
         sockaddr_in peer{};
@@ -59,12 +60,12 @@ class IpChannel : public Channel {
     if (listen_fd_ >= 0) ::close(listen_fd_);
     listen_fd_ = -1;
   }
-  void send(const MsgPtr& m) override {
+  bool send(const MsgPtr& m) override {
     if (m->delivery_warranty() == DCDT_DW_GUARANTEED ||
         static_cast<size_t>(m->payload_len()) + kMsgBodyFixed + kFrameOverhead > kMaxUdpFrame)
-      stream_->send(m);  // too big for a datagram: the stream carries it
-    else
-      udp_->send(m);
+      return stream_->send(m);  // too big for a datagram: the stream carries it
+    udp_->send(m);
+    return true;
   }
   ChannelStats stats() const override {
     ChannelStats s;
@@ -91,14 +92,15 @@ class IpChannel : public Channel {
 
 class StreamChannel : public Channel {
  public:
-  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx, bool lossy)
+  StreamChannel(std::string name, const ChannelOptions& o, StreamLink::ConnectFn fn, ReceiveFn rx, bool lossy,
+                StreamLink::ReplacedFn replaced = nullptr)
       : name_(std::move(name)) {
-    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), lossy);
+    stream_ = std::make_unique<StreamLink>(o, std::move(fn), this, std::move(rx), lossy, std::move(replaced));
   }
   ~StreamChannel() override { stop(); }
   void start() override { stream_->start(); }
   void stop() override { stream_->stop(); }
-  void send(const MsgPtr& m) override { stream_->send(m); }
+  bool send(const MsgPtr& m) override { return stream_->send(m); }
   bool dead() const override { return stream_->dead(); }
   ChannelStats stats() const override {
     ChannelStats s;
@@ -142,37 +144,51 @@ std::unique_ptr<Channel> make_serial_channel(const ChannelConfig& c, const Chann
   std::string dev = c.device;
   auto ch = std::make_unique<StreamChannel>(
       std::string(c.mode == ChannelMode::LINK ? "ser link " : "ser bridge ") + dev, o,
-      [dev](const std::atomic<bool>&) { return open_serial(dev); }, std::move(rx), /*lossy=*/true);
+      [dev](const std::atomic<bool>&, std::vector<uint8_t>*) { return open_serial(dev); }, std::move(rx), /*lossy=*/true);
   ch->mode = c.mode;
   ch->level = c.level;
   return ch;
 }
 
-std::unique_ptr<Channel> make_dialled_tcp_channel(const std::string& addr, int port, const ChannelOptions& o,
-                                               Channel::ReceiveFn rx) {
-  auto used = std::make_shared<bool>(false);
+std::unique_ptr<Channel> make_finder_channel(const std::string& name, bool dialling,
+                                             std::shared_ptr<FinderSlot> slot, const ChannelOptions& o,
+                                             Channel::ReceiveFn rx) {
+  StreamLink::ConnectFn connect;
+  StreamLink::ReplacedFn replaced;
+  if (dialling) {
+    connect = [slot](const std::atomic<bool>&, std::vector<uint8_t>*) {
+      if (slot->forget) return kGiveUp;
+      std::string addr;
+      int port;
+      {
+        std::lock_guard<std::mutex> l(slot->mu);
+        if (!slot->dial) return -1;  // waits for the Finder to hear the peer again
+        slot->dial = false;
+        addr = slot->addr;
+        port = slot->port;
+      }
+      return net::tcp_connect("", addr, port, 500);
+    };
+    replaced = [slot] { return slot->forget.load(); };
+  } else {
+    connect = [slot](const std::atomic<bool>&, std::vector<uint8_t>* prefix) {
+      if (slot->forget) return kGiveUp;
+      std::lock_guard<std::mutex> l(slot->mu);
+      const int fd = slot->fd;
+      if (fd < 0) return -1;  // waits for the Finder to accept the peer's next connection
+      slot->fd = -1;
+      slot->fd_waiting = false;
+      prefix->swap(slot->prefix);
+      slot->prefix.clear();
+      return fd;
+    };
+    // A new connection from the same peer replaces one that went silent.
+    replaced = [slot] { return slot->fd_waiting.load() || slot->forget.load(); };
+  }
   auto ch = std::make_unique<StreamChannel>(
-      "finder -> " + addr + ":" + std::to_string(port), o,
-      [addr, port, used](const std::atomic<bool>&) {
-        if (*used) return kGiveUp;
-        *used = true;
-        int fd = net::tcp_connect("", addr, port, 500);
-        return fd < 0 ? kGiveUp : fd;
-      },
-      std::move(rx), /*lossy=*/false);
+      name, o,
+      std::move(connect), std::move(rx), /*lossy=*/false, std::move(replaced));
   return ch;
-}
-
-std::unique_ptr<Channel> make_accepted_tcp_channel(int fd, const ChannelOptions& o, Channel::ReceiveFn rx) {
-  auto used = std::make_shared<bool>(false);
-  return std::make_unique<StreamChannel>(
-      "finder <- accepted", o,
-      [fd, used](const std::atomic<bool>&) {
-        if (*used) return kGiveUp;
-        *used = true;
-        return fd;
-      },
-      std::move(rx), /*lossy=*/false);
 }
 
 }  // namespace mrt::dcdt

@@ -24,14 +24,15 @@ void StreamLink::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void StreamLink::send(const MsgPtr& m) {
-  bool was_empty;
+bool StreamLink::send(const MsgPtr& m) {
+  OutQueue::Result r;
   {
     std::lock_guard<std::mutex> l(mu_);
-    was_empty = push_bounded(outq_, m, c.dropped);
+    r = outq_.push(m, unacked_bytes_, o_.max_queue_bytes, c);
   }
   // The thread drains the whole queue: only the first message needs a wake-up.
-  if (was_empty) waker_.wake();
+  if (r == OutQueue::kQueuedFirst) waker_.wake();
+  return r != OutQueue::kRefused;
 }
 
 uint64_t StreamLink::pending() const {
@@ -41,7 +42,8 @@ uint64_t StreamLink::pending() const {
 
 void StreamLink::loop() {
   while (!stop_) {
-    int fd = connect_(stop_);
+    std::vector<uint8_t> prefix;
+    int fd = connect_(stop_, &prefix);
     if (fd == kGiveUp) break;
     if (fd < 0) {
       sleep(o_.reconnect_ms);
@@ -49,7 +51,7 @@ void StreamLink::loop() {
     }
     ++c.reconnects;
     c.connected = true;
-    session(fd);
+    session(fd, prefix);
     c.connected = false;
     ::close(fd);
   }
@@ -69,6 +71,7 @@ std::vector<uint8_t> StreamLink::my_hello(bool reply) const {
 void StreamLink::ack_up_to(uint64_t s) {
   bool progress = false;
   while (!unacked_.empty() && unacked_.front().seq <= s) {
+    unacked_bytes_ -= cost(*unacked_.front().msg);
     unacked_.pop_front();
     progress = true;
   }
@@ -107,41 +110,56 @@ void StreamLink::on_hello(const Hello& h, bool* ready, std::vector<uint8_t>& wbu
   if (!was_ready) resend_all(wbuf);  // a new session: whatever it has not acknowledged
 }
 
-void StreamLink::session(int fd) {
+namespace {
+bool flush(int fd, std::vector<uint8_t>& wbuf) {
+  if (wbuf.empty()) return true;
+  const bool ok = net::write_all(fd, wbuf.data(), wbuf.size());
+  wbuf.clear();
+  return ok;
+}
+}  // namespace
+
+void StreamLink::session(int fd, const std::vector<uint8_t>& prefix) {
   SessionState s;
   std::vector<uint8_t> rbuf(65536);
+  if (!prefix.empty()) handle_bytes(prefix.data(), prefix.size(), s);
   while (!stop_) {
+    if (replaced_ && replaced_()) return;  // a newer connection to the same peer is waiting
     const auto now = Clock::now();
-    s.wbuf.clear();
     if (!s.peer_ready && now - s.last_hello > std::chrono::milliseconds(300)) {
       std::lock_guard<std::mutex> l(mu_);
       append(s.wbuf, my_hello(true));
       s.last_hello = now;
     }
-    if (!s.wbuf.empty() && !net::write_all(fd, s.wbuf.data(), s.wbuf.size())) return;
-    s.wbuf.clear();
+    if (s.send_ack) append(s.wbuf, encode_ack(last_rx_));
+    s.send_ack = false;
+    if (!flush(fd, s.wbuf)) return;
     pollfd p[2] = {{fd, POLLIN, 0}, {waker_.fd(), POLLIN, 0}};
     if (::poll(p, 2, 50) < 0 && errno != EINTR) return;
     if (p[1].revents) waker_.drain();
-    s.send_ack = false;
     if (p[0].revents & (POLLIN | POLLHUP | POLLERR)) {
       const ReadResult r = read_frames(fd, rbuf, s);
       if (r == ReadResult::kEnded) return;  // EOF or error: reconnect
       if (r == ReadResult::kRetry) continue;
     }
     if (s.send_ack) append(s.wbuf, encode_ack(last_rx_));
+    s.send_ack = false;
     if (s.peer_ready) fill_outbound(s.wbuf);
-    if (!s.wbuf.empty() && !net::write_all(fd, s.wbuf.data(), s.wbuf.size())) return;
+    if (!flush(fd, s.wbuf)) return;
   }
+}
+
+void StreamLink::handle_bytes(const uint8_t* data, size_t n, SessionState& s) {
+  s.dec.feed(data, n);
+  while (auto f = s.dec.next()) on_frame(*f, s);
+  c.errors += s.dec.errors() - s.counted_errors;  // the decoder counts per session
+  s.counted_errors = s.dec.errors();
 }
 
 StreamLink::ReadResult StreamLink::read_frames(int fd, std::vector<uint8_t>& rbuf, SessionState& s) {
   ssize_t r = ::read(fd, rbuf.data(), rbuf.size());
   if (r <= 0) return r < 0 && (errno == EINTR || errno == EAGAIN) ? ReadResult::kRetry : ReadResult::kEnded;
-  s.dec.feed(rbuf.data(), static_cast<size_t>(r));
-  while (auto f = s.dec.next()) on_frame(*f, s);
-  c.errors += s.dec.errors() - counted_errors_;
-  counted_errors_ = s.dec.errors();
+  handle_bytes(rbuf.data(), static_cast<size_t>(r), s);
   return ReadResult::kDone;
 }
 
@@ -175,6 +193,9 @@ void StreamLink::on_frame(const Frame& f, SessionState& s) {
 
 void StreamLink::on_msg(MsgFrame mf, SessionState& s) {
   if (mf.link_seq != 0) {
+    // Numbered for a run of us the peer has not yet named in this session
+    // (bytes an earlier run left in the line): it resends them once it has.
+    if (!s.peer_ready) return;
     s.send_ack = true;
     if (mf.link_seq <= last_rx_) return;  // already delivered (a resend)
     if (mf.link_seq != last_rx_ + 1) {
@@ -205,9 +226,9 @@ void StreamLink::fill_outbound(std::vector<uint8_t>& wbuf) {
   // small window bounds what one go-back resends.
   const size_t window = lossy_ ? std::min<size_t>(o_.max_unacked, kLossyWindow) : o_.max_unacked;
   while (!outq_.empty() && wbuf.size() < kMaxWriteBatch && unacked_.size() < window) {
-    MsgPtr m = std::move(outq_.front());
-    outq_.pop_front();
+    MsgPtr m = outq_.pop();
     if (m->delivery_warranty() == DCDT_DW_GUARANTEED) {
+      unacked_bytes_ += cost(*m);
       const uint64_t seq = next_seq_++;
       auto bytes = encode_msg(*m, seq);
       append(wbuf, bytes);

@@ -11,6 +11,10 @@
 // received from it; MSG frames are sent only once the peer's HELLO names our
 // incarnation. A new peer incarnation (a restart, even with the same id)
 // resets what we received from it and renumbers what we still owe it.
+// Guaranteed MSG frames are accepted only once the peer has named our
+// incarnation (frames left in a line's buffers by an earlier run are not
+// taken for ours). A link holds at most max_queue_bytes of queued and
+// unacknowledged messages; a guaranteed message beyond that is refused.
 #pragma once
 
 #include <atomic>
@@ -29,16 +33,24 @@ namespace mrt::dcdt::link {
 class StreamLink {
  public:
   /// Returns a connected fd, -1 to retry later, kGiveUp to end for good.
-  using ConnectFn = std::function<int(const std::atomic<bool>& stop)>;
+  /// Bytes already read from the fd (an accepted connection whose HELLO the
+  /// Finder read to learn the peer) go to *prefix; the session handles them first.
+  using ConnectFn = std::function<int(const std::atomic<bool>& stop, std::vector<uint8_t>* prefix)>;
+  /// Asked every poll round (<= 50 ms): true ends the current session so
+  /// that the next connection (already waiting) replaces it.
+  using ReplacedFn = std::function<bool()>;
 
-  StreamLink(ChannelOptions o, ConnectFn connect, Channel* owner, Channel::ReceiveFn rx, bool lossy)
-      : o_(o), connect_(std::move(connect)), owner_(owner), rx_(std::move(rx)), lossy_(lossy) {}
+  StreamLink(ChannelOptions o, ConnectFn connect, Channel* owner, Channel::ReceiveFn rx, bool lossy,
+             ReplacedFn replaced = nullptr)
+      : o_(o), connect_(std::move(connect)), replaced_(std::move(replaced)), owner_(owner), rx_(std::move(rx)),
+        lossy_(lossy) {}
   ~StreamLink() { stop(); }
 
   void start() { thread_ = std::thread([this] { loop(); }); }
   void stop();
-  /// Queues a message; never blocks on the network.
-  void send(const MsgPtr& m);
+  /// Queues a message; never blocks on the network. False: a guaranteed
+  /// message refused because the link holds max_queue_bytes (Channel::send).
+  bool send(const MsgPtr& m);
   bool dead() const { return dead_; }
   uint64_t pending() const;
   Counters c;
@@ -57,13 +69,16 @@ class StreamLink {
     Clock::time_point last_hello = Clock::now() - std::chrono::seconds(10);
     Clock::time_point nack_at = Clock::now() - std::chrono::seconds(10);
     uint64_t nack_for = ~0ull;
+    uint64_t counted_errors = 0;  ///< dec.errors() already added to c.errors
     std::vector<uint8_t> wbuf;
   };
 
   void loop();
   void sleep(int ms);
   /// One connection: returns when it ends (EOF, error, stop).
-  void session(int fd);
+  void session(int fd, const std::vector<uint8_t>& prefix);
+  /// Feeds received bytes to the decoder and handles the frames.
+  void handle_bytes(const uint8_t* data, size_t n, SessionState& s);
   enum class ReadResult { kEnded, kRetry, kDone };
   /// Reads what the peer sent and handles its frames: kEnded when the
   /// connection ended, kRetry when the read was interrupted.
@@ -82,6 +97,7 @@ class StreamLink {
 
   ChannelOptions o_;
   ConnectFn connect_;
+  ReplacedFn replaced_;
   Channel* owner_;
   Channel::ReceiveFn rx_;
   bool lossy_;  ///< serial: frames can be lost without the connection dropping
@@ -89,13 +105,13 @@ class StreamLink {
   net::Waker waker_;
   std::thread thread_;
   mutable std::mutex mu_;
-  std::deque<MsgPtr> outq_;
+  OutQueue outq_;
   std::deque<Unacked> unacked_;
+  size_t unacked_bytes_ = 0;  ///< cost() of unacked_, counted against max_queue_bytes
   Clock::time_point front_since_ = Clock::now();
   uint64_t next_seq_ = 1;
   uint64_t last_rx_ = 0;
   uint64_t peer_inc_ = 0;
-  uint64_t counted_errors_ = 0;
 };
 
 }  // namespace mrt::dcdt::link

@@ -23,13 +23,13 @@ void UdpLink::stop() {
 }
 
 void UdpLink::send(const MsgPtr& m) {
-  bool was_empty;
+  OutQueue::Result r;
   {
     std::lock_guard<std::mutex> l(mu_);
-    was_empty = push_bounded(outq_, m, c.dropped);
+    r = outq_.push(m, 0, o_.max_queue_bytes, c);  // never guaranteed: a full queue drops the oldest
   }
   // The thread drains the whole queue: only the first message needs a wake-up.
-  if (was_empty) waker_.wake();
+  if (r == OutQueue::kQueuedFirst) waker_.wake();
 }
 
 uint64_t UdpLink::pending() const {
@@ -123,7 +123,8 @@ void UdpLink::send_queued(Clock::time_point now) {
   std::deque<MsgPtr> batch;
   {
     std::lock_guard<std::mutex> l(mu_);
-    batch.swap(outq_);
+    batch.swap(outq_.q);
+    outq_.bytes = 0;
   }
   for (auto& m : batch) {
     const bool retx = m->delivery_warranty() == DCDT_DW_RETRANSMIT;

@@ -57,7 +57,7 @@ class UdpLink {
   net::Waker waker_;
   std::thread thread_;
   mutable std::mutex mu_;
-  std::deque<MsgPtr> outq_;
+  OutQueue outq_;
   std::map<uint64_t, Retx> pending_;
   size_t pending_size_ = 0;
   uint64_t next_seq_ = 1;

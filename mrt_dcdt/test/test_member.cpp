@@ -50,27 +50,59 @@ TEST(Member, PeriodicRunsAtItsPeriodAndTerminatingEndsLetsWork) {
   EXPECT_EQ(p.GetState(), MemberState::TERMINATED);
 }
 
+// On-CPU and run-queue waiting time of the calling thread, in ns
+// (/proc/thread-self/schedstat); false when the kernel does not provide it.
+bool ThreadSchedNs(uint64_t* on_cpu, uint64_t* waiting) {
+  std::ifstream f("/proc/thread-self/schedstat");
+  return static_cast<bool>(f >> *on_cpu >> *waiting);
+}
+
 class Cyclic : public DCDT_Member {
  public:
   explicit Cyclic(DCDT_Agora* a) : DCDT_Member(a) {}
   void DoYourJob(int) override {
-    if (++count == 1000) Shutdown();
+    if (++count == 1) {
+      t0 = Clock::now();
+      sched_ok = ThreadSchedNs(&cpu0, &wait0);
+    }
+    if (count == 1000) {
+      t1 = Clock::now();
+      sched_ok = sched_ok && ThreadSchedNs(&cpu1, &wait1);
+      Shutdown();
+    }
   }
   int count = 0;
+  Clock::time_point t0, t1;
+  uint64_t cpu0 = 0, wait0 = 0, cpu1 = 0, wait1 = 0;
+  bool sched_ok = false;
 };
 
 TEST(Member, CyclicRunsWithoutDelayAndShutdownStopsTheAgora) {
   DCDT_Agora agora(dcdt_test::IsolatedOptions());
   Cyclic c(&agora);
-  Periodic slow(&agora, 10000, 1000);  // would run for hours without Shutdown
+  Periodic slow(&agora, 60000, 1000);  // waits 60 s after its first job: only Shutdown ends it sooner
   agora.AddMember(&c);
   agora.AddMember(&slow);
   agora.ActivateMember(&c);
   agora.ActivateMember(&slow);
-  auto t0 = Clock::now();
   agora.LetsWork();
-  EXPECT_GE(c.count, 1000);
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 2.0);
+  const auto returned = Clock::now();
+  ASSERT_GE(c.count, 1000);
+  const double wall_ms = std::chrono::duration<double, std::milli>(c.t1 - c.t0).count();
+  if (c.sched_ok) {
+    // Without delay: between its 1st and 1000th job the Member's thread is
+    // either on a CPU or waiting for one (a loaded machine makes that wait
+    // long: it is not counted), never asleep. A Member that waited even
+    // 1 ms between jobs would sleep >= 999 ms. Sleep = wall - on CPU - queued.
+    const double asleep_ms = wall_ms - static_cast<double>((c.cpu1 - c.cpu0) + (c.wait1 - c.wait0)) / 1e6;
+    RecordProperty("asleep_us", static_cast<int>(asleep_ms * 1000));
+    EXPECT_LT(asleep_ms, 100.0) << "wall " << wall_ms << " ms";
+  } else {
+    EXPECT_LT(wall_ms, 2000.0);  // no schedstat: 999 jobs of >= 1 ms would take >= 999 ms
+  }
+  // Shutdown interrupts the periodic Member's 60 s wait: LetsWork returns
+  // long before it would end (5 s leaves room for a loaded machine).
+  EXPECT_LT(std::chrono::duration<double>(returned - c.t1).count(), 5.0);
 }
 
 // A producer shares N messages; a message-driven consumer (no period,

@@ -61,9 +61,10 @@ class FakeChannel : public mrt::dcdt::Channel {
   }
   void start() override {}
   void stop() override {}
-  void send(const mrt::dcdt::MsgPtr& m) override {
+  bool send(const mrt::dcdt::MsgPtr& m) override {
     std::lock_guard<std::mutex> l(mu);
     sent.push_back(m);
+    return true;
   }
   mrt::dcdt::ChannelStats stats() const override { return {}; }
   size_t count() {

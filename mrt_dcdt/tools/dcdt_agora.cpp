@@ -116,12 +116,13 @@ class Publisher : public Member {
         for (size_t p; (p = t.find("{i}")) != std::string::npos;) t.replace(p, 3, std::to_string(sent_));
         m->set_payload(t);
       }
-      share_msg(m);
+      if (!share_msg(m)) ++refused;  // a full mailbox or link refused a guaranteed message
       ++sent_;
     }
   }
 
   std::atomic<bool> go{false};
+  std::atomic<uint64_t> refused{0};
 
  private:
   const Options& o_;
@@ -307,14 +308,14 @@ void wait_for_channels(Agora& agora) {
   std::this_thread::sleep_for(std::chrono::milliseconds(50));  // inner-link datagrams
 }
 
-std::string stats_line(Agora& agora, const Subscriber& sub) {
+std::string stats_line(Agora& agora, const Subscriber& sub, uint64_t refused) {
   auto s = agora.stats();
   std::ostringstream st;
   st << "stats routed=" << s.routed << " duplicates=" << s.duplicates << " inner_peers=" << s.inner_peers
-     << " received=" << sub.received;
+     << " received=" << sub.received << " share_refused=" << refused;
   for (auto& c : s.channels)
     st << " [" << c.name << " sent=" << c.sent << " received=" << c.received << " resent=" << c.resent
-       << " dropped=" << c.dropped << " reconnects=" << c.reconnects << "]";
+       << " dropped=" << c.dropped << " refused=" << c.refused << " reconnects=" << c.reconnects << "]";
   return st.str();
 }
 
@@ -348,7 +349,7 @@ int run(int argc, char** argv) {
   if (publishing) wait_for_channels(agora);
   agora.shutdown();
   work.join();
-  out.Line(stats_line(agora, sub));
+  out.Line(stats_line(agora, sub, pub.refused));
   return ok ? 0 : 1;
 }
 

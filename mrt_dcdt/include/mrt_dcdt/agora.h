@@ -31,6 +31,9 @@ struct AgoraOptions {
   bool inner_links = true;      ///< talk to the other Agoras of this machine
   bool finder = true;           ///< NETWORK: discover Agoras by multicast
   int finder_period_ms = 200;
+  int finder_tcp_port = 0;        ///< the Finder's TCP listening port (0 = any free one)
+  int finder_announce_port = 0;   ///< the port announced in beacons (0 = the listening one; else e.g. a forwarded port)
+  int finder_forget_ms = 10000;   ///< a Finder peer unheard of this long and not connected is forgotten, with what was owed to it
   int agora_id = 0;             ///< 0 = random
   int inner_socket_buffer = 4 << 20;  ///< SO_SNDBUF/SO_RCVBUF asked for the inner-link socket (bytes)
   size_t inner_queue_bytes = 8u << 20;  ///< per local peer: bytes waiting for a slow Agora before it is dropped from delivery
@@ -46,6 +49,8 @@ struct AgoraStats {
   uint64_t guaranteed_refused = 0;  ///< guaranteed messages a full mailbox refused (the sender was told under SLWB)
   uint64_t inner_dropped = 0;    ///< messages not delivered to a stalled local Agora (its queue was full)
   std::vector<int> inner_stalled_peers;  ///< local Agoras currently dropped from delivery
+  uint64_t channel_refused = 0;  ///< guaranteed messages a full channel out-queue refused (route/share_msg returned false)
+  uint64_t channels_lost = 0;    ///< messages still queued or unacknowledged on Finder channels of forgotten peers
   int inner_peers = 0;
   int finder_peers = 0;
   std::vector<int> peer_ids;  ///< Agoras seen: inner-link peers, Finder peers, channel peers (sorted, unique)
@@ -92,7 +97,8 @@ class Agora {
   const AgoraOptions& options() const { return options_; }
 
   // --- used by Members and system Members ---
-  /// False when a guaranteed message was refused by a full local mailbox.
+  /// False when a guaranteed message was refused by a full local mailbox
+  /// (SLWB) or by a full channel out-queue; it went to every other destination.
   bool route(std::shared_ptr<Msg> msg, const Source& src);
   int next_member_id() { return ++member_counter_; }
   uint64_t next_seq() { return ++seq_counter_; }
@@ -149,7 +155,7 @@ class Agora {
   std::vector<std::unique_ptr<Channel>> channels_;
   std::unique_ptr<InnerLinkManager> inner_;
   std::unique_ptr<Finder> finder_;
-  std::atomic<uint64_t> routed_{0}, duplicates_{0}, hop_limited_{0};
+  std::atomic<uint64_t> routed_{0}, duplicates_{0}, hop_limited_{0}, channel_refused_{0}, channels_lost_{0};
 };
 
 }  // namespace mrt::dcdt
