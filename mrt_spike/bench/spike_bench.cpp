@@ -40,6 +40,7 @@ struct BenchOptions {
   std::string vertices = "centre";
   std::string graph = "subgoal";
   int scale = 1;
+  int landmarks = 16;       ///< differential heuristic over the subgoal graph (0: octile only)
   int ompl = 0;             ///< OMPL's RRT* and PRM* on the first N queries (0: not run)
   double ompl_time = 1.0;   ///< s per OMPL query
 };
@@ -92,6 +93,7 @@ void bench_map(const std::string& map_file, const std::string& scen_file, const 
   opts.refine = b.refine;
   opts.quadtree.centre_only = b.vertices == "centre";
   opts.graph = b.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
+  opts.landmarks = b.landmarks;
   SpikePlanner spike(grid, opts);
   const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   GridAstar astar(grid);
@@ -134,6 +136,8 @@ void add_options(CLI::App& app, MainArgs& m, BenchOptions& b) {
       ->check(CLI::IsMember({"centre", "corners"}));
   app.add_option("--graph", b.graph, "SPIKE: search the subgoal graph or the quadtree's leaves")
       ->check(CLI::IsMember({"subgoal", "quadtree"}));
+  app.add_option("--landmarks", b.landmarks, "SPIKE: landmarks of the differential heuristic (0: octile only)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--scale", b.scale, "upscale each map by this factor (cells become N x N blocks)")
       ->check(CLI::PositiveNumber);
   app.add_option("--msl", m.msl_steps, "MSL field re-planning: this many 50 ms steps (then exit)");
