@@ -28,6 +28,8 @@ void print_stats(const std::string& p, const RunStats& s, double pre_ms) {
             << p << ".mean_length_ratio: " << s.mean_ratio << " ratio\n"
             << p << ".median_time: " << s.median_us << " us\n"
             << p << ".p95_time: " << s.p95_us << " us\n"
+            << p << ".median_cpu_time: " << s.median_cpu_us << " us\n"
+            << p << ".p95_cpu_time: " << s.p95_cpu_us << " us\n"
             << p << ".mean_expansions: " << s.mean_expansions << " count\n"
             << p << ".preprocessing: " << pre_ms << " ms\n";
 }
@@ -113,6 +115,8 @@ void bench_map(const std::string& map_file, const std::string& scen_file, const 
   std::cout << name << ".spike.fallbacks: " << ss.fallbacks << " count\n";
   print_stats(name + ".astar", as, 0.0);
   std::cout << name << ".speedup_median: " << (ss.median_us > 0 ? as.median_us / ss.median_us : 0.0)
+            << " ratio\n"
+            << name << ".speedup_median_cpu: " << (ss.median_cpu_us > 0 ? as.median_cpu_us / ss.median_cpu_us : 0.0)
             << " ratio\n";
   if (b.ompl > 0) bench_ompl(name, grid, scen, idx, b);
 }
