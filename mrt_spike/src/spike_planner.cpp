@@ -40,7 +40,7 @@ std::vector<Cell> string_pull(const Quadtree& tree, const std::vector<Cell>& pat
 SpikePlanner::SpikePlanner(const OccupancyGrid& grid, SpikeOptions options)
     : grid_(grid), options_(options), tree_(new Quadtree(grid, options.quadtree)),
       fallback_(new GridAstar(grid)) {
-  if (options_.graph == SpikeOptions::Graph::subgoal) subgoals_ = std::make_unique<SubgoalGraph>(grid);
+  if (options_.graph == SpikeOptions::Graph::subgoal) subgoals_ = std::make_unique<SubgoalGraph>(grid, options_.landmarks);
   const size_t n = tree_->vertices().size() + 2;
   g_.assign(n, 0.0);
   parent_.assign(n, -1);

@@ -34,7 +34,7 @@ bool SubgoalGraph::move_ok(int x, int y, int d) const {
   return d < 4 || (grid_.free(nx, y) && grid_.free(x, ny));
 }
 
-SubgoalGraph::SubgoalGraph(const OccupancyGrid& grid)
+SubgoalGraph::SubgoalGraph(const OccupancyGrid& grid, int landmarks)
     : grid_(grid), sub_id_(static_cast<size_t>(grid.width()) * grid.height(), -1) {
   const int w = grid.width(), h = grid.height();
   for (int y = 0; y < h; ++y)
@@ -80,6 +80,7 @@ SubgoalGraph::SubgoalGraph(const OccupancyGrid& grid)
   stamp_.assign(n, 0);
   goal_mark_.assign(n, 0);
   closed_.assign(n, 0);
+  build_landmarks(landmarks);
 }
 
 void SubgoalGraph::add_if_subgoal(int x, int y, int d, int k, std::vector<int>& out) const {
@@ -139,13 +140,14 @@ std::vector<Cell> SubgoalGraph::plan(const Cell& start, const Cell& goal, double
   for (int t : scratch_) goal_mark_[t] = run_;
   const int goal_sub = sub_id_[grid_.index(goal.x, goal.y)];
   if (goal_sub >= 0) goal_mark_[goal_sub] = run_;
+  set_goal_bounds(goal, scratch_, goal_sub);
   auto point = [&](int v) { return v == S ? start : v == G ? goal : subgoals_[v]; };
   auto touch = [&](int v) {
     if (stamp_[v] == run_) return;
     stamp_[v] = run_;
     closed_[v] = 0;
     g_[v] = std::numeric_limits<double>::infinity();
-    h_[v] = octile(point(v), goal);
+    h_[v] = v == G ? 0.0 : heuristic(v == S ? -1 : v, point(v), goal);
     parent_[v] = -1;
   };
   heap_.clear();
@@ -154,7 +156,7 @@ std::vector<Cell> SubgoalGraph::plan(const Cell& start, const Cell& goal, double
   auto relax = [&](int u, int v, double c) {
     touch(v);
     const double ng = g_[u] + c;
-    if (closed_[v] || ng >= g_[v] - 1e-9) return;
+    if (closed_[v] || ng >= g_[v] - 1e-9 || std::isinf(h_[v])) return;
     g_[v] = ng;
     parent_[v] = u;
     heap_.push_back({static_cast<float>(ng + h_[v]), static_cast<float>(ng), v});

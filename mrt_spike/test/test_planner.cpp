@@ -267,6 +267,34 @@ TEST(SubgoalGraph, OctileCostEqualsAstarOnRandomMap) {
   EXPECT_GT(solved, 100);
 }
 
+TEST(SubgoalGraph, LandmarksKeepTheCostAndCutExpansions) {
+  // The differential heuristic is consistent: with 8 landmarks the cost is
+  // still the A*'s on every pair of the random map, and the search expands
+  // fewer vertices in total than with the octile heuristic alone (it is never
+  // below octile, so never more on a pair up to ties).
+  const OccupancyGrid g = load_movingai_map(kData + "/random64.map");
+  SubgoalGraph plain(g), alt(g, 8);
+  EXPECT_EQ(plain.landmark_count(), 0);
+  EXPECT_EQ(alt.landmark_count(), 8);
+  GridAstar astar(g);
+  int solved = 0, exp_plain = 0, exp_alt = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Cell s{(k * 37) % 64, (k * 11) % 64}, t{(k * 53 + 7) % 64, (k * 29 + 3) % 64};
+    if (g.blocked(s.x, s.y) || g.blocked(t.x, t.y)) continue;
+    const PlanResult a = astar.plan(s, t);
+    double cost = -1.0;
+    const std::vector<Cell> p = alt.plan(s, t, &cost, &exp_alt);
+    plain.plan(s, t, nullptr, &exp_plain);
+    ASSERT_EQ(a.solved, !p.empty()) << k;
+    if (!a.solved) continue;
+    ++solved;
+    EXPECT_NEAR(cost, a.length, 1e-6) << k;
+    EXPECT_TRUE(path_valid(g, p, s, t)) << k;
+  }
+  EXPECT_GT(solved, 100);
+  EXPECT_LT(exp_alt, exp_plain);
+}
+
 TEST(JumpPointSearch, OctileCostEqualsAstar) {
   // Exact like the A* (same octile cost, valid path) on the random map and
   // through the one-cell passage (25*sqrt(2) + 13, see NarrowPassageOneCellWide).

@@ -24,6 +24,7 @@ struct Args {
   bool refine = true;
   std::string vertices = "centre", graph = "subgoal";
   int max_leaf = 64;
+  int landmarks = 16;
   std::string ompl_planner = "rrtstar";
   double ompl_time = 1.0;
 };
@@ -46,6 +47,8 @@ void add_options(CLI::App& app, Args& a) {
   o_scen->excludes(o_start);
   app.add_option("--graph", a.graph, "SPIKE: search the subgoal graph or the quadtree's leaves")
       ->check(CLI::IsMember({"subgoal", "quadtree"}));
+  app.add_option("--landmarks", a.landmarks, "SPIKE: landmarks of the differential heuristic (0: octile only)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--refine", a.refine, "SPIKE on the quadtree: octile A* in the corridor of the coarse path (1) or not (0)");
   app.add_option("--vertices", a.vertices, "SPIKE on the quadtree: one vertex per leaf (centre) or corners + centre")
       ->check(CLI::IsMember({"centre", "corners"}));
@@ -65,6 +68,7 @@ int run(const Args& a) {
   opts.refine = a.refine;
   opts.quadtree.centre_only = a.vertices == "centre";
   opts.graph = a.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
+  opts.landmarks = a.landmarks;
   std::unique_ptr<SpikePlanner> spike;
   std::unique_ptr<GridAstar> astar;
   std::unique_ptr<OmplPlanner> ompl;

@@ -55,6 +55,9 @@ struct SpikeOptions {
   /// the default) or the quadtree's leaves (Lazy Theta*, optionally refined).
   enum class Graph { subgoal, quadtree };
   Graph graph = Graph::subgoal;
+  /// Landmarks of the differential heuristic over the subgoal graph (0: the
+  /// octile heuristic alone). Preprocessing: one Dijkstra over the graph each.
+  int landmarks = 16;
   QuadtreeOptions quadtree;
   bool smooth = true;  ///< final string pulling
   bool refine = true;  ///< octile A* + string pulling in the corridor of leaves around the path

@@ -14,7 +14,8 @@ namespace mrt::spike {
 struct QueryOutcome {
   int index = 0;
   PlanResult result;
-  double time_us = 0.0;
+  double time_us = 0.0;        ///< wall clock
+  double cpu_us = 0.0;         ///< CPU time of the calling thread (not inflated by preemption)
   bool valid = false;         ///< by the issue's rule (checked after timing)
   double optimal = 0.0;       ///< scenario's optimal octile length
 };
@@ -40,6 +41,8 @@ struct RunStats {
   double mean_ratio = 0.0;
   double median_us = 0.0;
   double p95_us = 0.0;
+  double median_cpu_us = 0.0;  ///< thread CPU time
+  double p95_cpu_us = 0.0;
   int fallbacks = 0;
   double mean_expansions = 0.0;
 };

@@ -14,8 +14,10 @@ namespace mrt::spike {
 
 class SubgoalGraph {
  public:
-  /// Preprocessing: subgoals, the clearances in the 8 directions and the edges.
-  explicit SubgoalGraph(const OccupancyGrid& grid);
+  /// Preprocessing: subgoals, the clearances in the 8 directions, the edges
+  /// and, when landmarks > 0, that many landmarks with their distances to
+  /// every subgoal (differential heuristic, see set_goal_bounds).
+  explicit SubgoalGraph(const OccupancyGrid& grid, int landmarks = 0);
 
   /// The shortest octile path from start to goal (8-connected, no corner
   /// cutting) as waypoints: the subgoals and, between two of them, the cell
@@ -26,6 +28,7 @@ class SubgoalGraph {
                          int* expansions = nullptr);
 
   const std::vector<Cell>& subgoals() const { return subgoals_; }
+  int landmark_count() const { return landmarks_; }
   size_t edge_count() const { return adj_.size(); }
   bool is_subgoal(int x, int y) const { return grid_.inside(x, y) && sub_id_[grid_.index(x, y)] >= 0; }
   /// Subgoals reachable from the free cell c by a diagonal-then-straight
@@ -38,6 +41,10 @@ class SubgoalGraph {
   void add_if_subgoal(int x, int y, int d, int k, std::vector<int>& out) const;
   bool direct_octile(const Cell& a, const Cell& b, bool diagonal_first) const;
   std::vector<Cell> unfold(const std::vector<int>& chain, const Cell& start, const Cell& goal) const;
+  void build_landmarks(int count);
+  void dijkstra(int source, std::vector<double>& dist) const;
+  void set_goal_bounds(const Cell& goal, const std::vector<int>& near, int goal_sub);
+  double heuristic(int v, const Cell& p, const Cell& goal) const;
 
   const OccupancyGrid& grid_;
   std::vector<int> sub_id_;
@@ -46,6 +53,12 @@ class SubgoalGraph {
   std::vector<int> adj_start_;
   std::vector<int> adj_;
   std::vector<float> adj_cost_;
+  // landmarks: lm_dist_[v * landmarks_ + l] = graph distance from landmark l
+  // to subgoal v (infinity when not connected); goal_lm_[l] the same for the
+  // goal of the current query
+  int landmarks_ = 0;
+  std::vector<double> lm_dist_;
+  std::vector<double> goal_lm_;
   // search state: subgoals 0..n-1, start n, goal n+1
   struct Entry {
     float f;

@@ -1,16 +1,21 @@
 // spike_node: SPIKE as a ROS planner. make_plan (nav_msgs/GetPlan, as navfn),
-// goal -> plan from the robot's pose in tf, moving obstacles from percepts,
-// re-planning when the plan becomes blocked, rviz markers.
+// goal -> plan from the robot's pose in tf, moving obstacles from percepts
+// and (optionally) MAP's world model, re-planning when the plan becomes
+// blocked, rviz markers, diagnostics.
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <mrt_msgs/Percept.h>
+#include <mrt_msgs/WorldModel.h>
 #include <nav_msgs/GetPlan.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
@@ -28,8 +33,10 @@ struct NodeOptions {
   std::string base_frame = "base_link";
   double replan_rate = 10.0;
   double obstacle_timeout = 1.0;
-  std::vector<std::string> obstacle_classes{"Person", "Robot", "Obstacle"};
+  std::vector<std::string> obstacle_classes{"Person", "Robot", "Teammate", "Opponent", "Obstacle"};
   double default_obstacle_radius = 0.25;
+  bool use_world_model = false;  ///< also take the anchors of MAP's world model
+  double anchor_sigmas = 1.0;    ///< an anchor's radius grows by this many position std devs
   WorldPlannerOptions planner;
 };
 
@@ -42,6 +49,9 @@ class SpikeNode {
     service_ = nh.advertiseService("make_plan", &SpikeNode::make_plan, this);
     goal_sub_ = nh.subscribe("goal", 1, &SpikeNode::on_goal, this);
     percept_sub_ = nh.subscribe("percepts", 20, &SpikeNode::on_percept, this);
+    if (o.use_world_model) model_sub_ = nh.subscribe("world_model", 5, &SpikeNode::on_world_model, this);
+    diag_.setHardwareID("spike " + o.map);
+    diag_.add("planner", this, &SpikeNode::diagnose);
     timer_ = nh.createTimer(ros::Duration(1.0 / o.replan_rate), &SpikeNode::on_timer, this);
     marker_pub_.publish(static_markers(planner_, o_.frame_id));
     ROS_INFO("spike_node: map %s, %d x %d cells of %.3f m, %zu quadtree leaves", o.map.c_str(),
@@ -66,7 +76,7 @@ class SpikeNode {
   bool make_plan(nav_msgs::GetPlan::Request& req, nav_msgs::GetPlan::Response& res) {
     const auto& s = req.start.pose.position;
     const auto& g = req.goal.pose.position;
-    const WorldPlan p = planner_.plan(s.x, s.y, g.x, g.y);
+    const WorldPlan p = timed_plan(s.x, s.y, g.x, g.y);
     if (!p.solved) {
       ROS_WARN("make_plan: no path: %s; nearest reachable point (%.2f, %.2f)", p.reason.c_str(), p.nearest_x, p.nearest_y);
       res.plan.header.frame_id = o_.frame_id;
@@ -92,7 +102,7 @@ class SpikeNode {
     double x = 0, y = 0;
     if (!has_goal_ || !current_pose(x, y)) return;
     const auto& g = goal_.pose.position;
-    plan_ = planner_.plan(x, y, g.x, g.y);
+    plan_ = timed_plan(x, y, g.x, g.y);
     ++replans_;
     if (!plan_.solved)
       ROS_WARN("spike_node (%s): no path: %s; nearest reachable point (%.2f, %.2f)", why, plan_.reason.c_str(),
@@ -113,6 +123,48 @@ class SpikeNode {
   }
 
   void on_percept(const mrt_msgs::Percept& p);
+  void on_world_model(const mrt_msgs::WorldModel& m);
+  bool to_map(const std::string& frame, geometry_msgs::TransformStamped& t);
+  void update_track(const std::string& key, double x, double y, double r, double vx, double vy, bool has_v,
+                    const ros::Time& stamp);
+
+  // every plan goes through here: its time and its failure for the diagnostics
+  WorldPlan timed_plan(double x0, double y0, double x1, double y1) {
+    const auto t0 = std::chrono::steady_clock::now();
+    WorldPlan p = planner_.plan(x0, y0, x1, y1);
+    last_plan_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    max_plan_ms_ = std::max(max_plan_ms_, last_plan_ms_);
+    ++plans_;
+    if (!p.solved) {
+      ++failures_;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " (%.2f, %.2f) -> (%.2f, %.2f)", x0, y0, x1, y1);
+      last_failure_ = p.reason + buf;
+    }
+    last_solved_ = p.solved;
+    return p;
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
+    if (plans_ > 0 && !last_solved_)
+      st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "last plan failed: " + last_failure_);
+    else
+      st.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
+    st.add("map", o_.map);
+    st.add("map loaded", true);
+    st.add("map cells", std::to_string(planner_.map().grid.width()) + " x " + std::to_string(planner_.map().grid.height()));
+    st.add("resolution (m)", planner_.map().frame.resolution);
+    st.add("quadtree leaves", planner_.quadtree().leaves().size());
+    st.add("obstacles", tracks_.size());
+    st.add("plans", plans_);
+    st.add("re-plans", replans_);
+    st.add("failures", failures_);
+    st.add("last plan time (ms)", last_plan_ms_);
+    st.add("max plan time (ms)", max_plan_ms_);
+    st.add("last failure", last_failure_.empty() ? std::string("none") : last_failure_);
+    st.add("dropped messages", dropped_);
+    st.add("world model", o_.use_world_model);
+  }
 
   void on_timer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
@@ -129,6 +181,7 @@ class SpikeNode {
     if (changed || obstacles_dirty_) marker_pub_.publish(obstacle_markers(planner_, o_.frame_id));
     obstacles_dirty_ = false;
     if (has_goal_ && plan_.solved && !planner_.still_valid(plan_)) replan("plan blocked");
+    diag_.update();
   }
 
   struct Track {
@@ -143,7 +196,8 @@ class SpikeNode {
   tf2_ros::TransformListener listener_;
   ros::Publisher plan_pub_, marker_pub_;
   ros::ServiceServer service_;
-  ros::Subscriber goal_sub_, percept_sub_;
+  ros::Subscriber goal_sub_, percept_sub_, model_sub_;
+  diagnostic_updater::Updater diag_;
   ros::Timer timer_;
   geometry_msgs::PoseStamped goal_;
   bool has_goal_ = false;
@@ -152,6 +206,10 @@ class SpikeNode {
   int next_id_ = 0;
   bool obstacles_dirty_ = false;
   int replans_ = 0;
+  int plans_ = 0, failures_ = 0, dropped_ = 0;
+  bool last_solved_ = true;
+  double last_plan_ms_ = 0.0, max_plan_ms_ = 0.0;
+  std::string last_failure_;
 };
 
 double attribute(const mrt_msgs::PerceptObject& o, const std::string& name, double def, bool* found = nullptr) {
@@ -163,41 +221,96 @@ double attribute(const mrt_msgs::PerceptObject& o, const std::string& name, doub
   return def;
 }
 
+bool SpikeNode::to_map(const std::string& frame, geometry_msgs::TransformStamped& t) {
+  try {
+    t = tf_.lookupTransform(o_.frame_id, frame, ros::Time(0), ros::Duration(0.1));
+    return true;
+  } catch (const tf2::TransformException& e) {
+    ROS_WARN_THROTTLE(5, "spike_node: obstacles in %s dropped: %s", frame.c_str(), e.what());
+    ++dropped_;
+    return false;
+  }
+}
+
+// One obstacle (map frame): a new track or a move; without a velocity, the
+// velocity from the last sighting.
+void SpikeNode::update_track(const std::string& key, double x, double y, double r, double vx, double vy, bool has_v,
+                             const ros::Time& stamp) {
+  auto [it, fresh] = tracks_.try_emplace(key);
+  Track& tr = it->second;
+  if (fresh) tr.id = next_id_++;
+  const double dt = (stamp - tr.seen).toSec();
+  if (!has_v && !fresh && dt > 1e-3) vx = (x - tr.x) / dt, vy = (y - tr.y) / dt;
+  planner_.set_obstacle(tr.id, x, y, r, vx, vy);
+  tr.x = x, tr.y = y, tr.seen = stamp;
+  obstacles_dirty_ = true;
+}
+
+bool is_obstacle_class(const std::vector<std::string>& classes, const std::string& c) {
+  return std::find(classes.begin(), classes.end(), c) != classes.end();
+}
+
 // Objects of the obstacle classes, at attributes x, y in the percept's frame
 // (radius, vx, vy when given; else the default radius and the velocity from
 // the last sighting), moved into the map frame through tf.
 void SpikeNode::on_percept(const mrt_msgs::Percept& p) {
   geometry_msgs::TransformStamped t;
-  try {
-    t = tf_.lookupTransform(o_.frame_id, p.header.frame_id, ros::Time(0), ros::Duration(0.1));
-  } catch (const tf2::TransformException& e) {
-    ROS_WARN_THROTTLE(5, "spike_node: percept in %s dropped: %s", p.header.frame_id.c_str(), e.what());
-    return;
-  }
+  if (!to_map(p.header.frame_id, t)) return;
   const double yaw = mrt::ros_common::quaternion_to_yaw(t.transform.rotation);
   const double c = std::cos(yaw), s = std::sin(yaw);
   const ros::Time stamp = p.header.stamp.isZero() ? ros::Time::now() : p.header.stamp;
   for (const auto& ob : p.objects) {
-    if (std::find(o_.obstacle_classes.begin(), o_.obstacle_classes.end(), ob.membership_class) == o_.obstacle_classes.end())
-      continue;
-    bool has_x = false, has_y = false;
+    if (!is_obstacle_class(o_.obstacle_classes, ob.membership_class)) continue;
+    bool has_x = false, has_y = false, has_vx = false, has_vy = false;
     const double lx = attribute(ob, "x", 0, &has_x), ly = attribute(ob, "y", 0, &has_y);
     if (!has_x || !has_y) {
       ROS_WARN_THROTTLE(5, "spike_node: %s without x, y dropped", ob.name.c_str());
+      ++dropped_;
       continue;
     }
     const double x = t.transform.translation.x + c * lx - s * ly, y = t.transform.translation.y + s * lx + c * ly;
-    auto [it, fresh] = tracks_.try_emplace(p.robot + "/" + ob.name);
-    Track& tr = it->second;
-    double vx = 0, vy = 0;
-    if (fresh) {
-      tr.id = next_id_++;
-    } else if ((stamp - tr.seen).toSec() > 1e-3) {
-      vx = (x - tr.x) / (stamp - tr.seen).toSec(), vy = (y - tr.y) / (stamp - tr.seen).toSec();
+    const double vx = attribute(ob, "vx", 0, &has_vx), vy = attribute(ob, "vy", 0, &has_vy);
+    update_track(p.robot + "/" + ob.name, x, y, attribute(ob, "radius", o_.default_obstacle_radius), vx, vy,
+                 has_vx && has_vy, stamp);
+  }
+}
+
+// The anchors of MAP's world model of the obstacle classes (tentative ones
+// skipped) become moving obstacles: radius ~default_obstacle_radius plus
+// ~anchor_sigmas position standard deviations (the larger of x and y), the
+// footprint swept along the anchor's velocity (both rotated into the map
+// frame). The model is complete: a producer's anchors missing from its new
+// model are removed.
+void SpikeNode::on_world_model(const mrt_msgs::WorldModel& m) {
+  geometry_msgs::TransformStamped t;
+  if (!to_map(m.header.frame_id, t)) return;
+  const double yaw = mrt::ros_common::quaternion_to_yaw(t.transform.rotation);
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  const ros::Time stamp = m.header.stamp.isZero() ? ros::Time::now() : m.header.stamp;
+  const std::string prefix = "world_model:" + m.robot + "/";
+  std::set<std::string> seen;
+  for (const auto& a : m.anchors) {
+    if (a.status == mrt_msgs::Anchor::TENTATIVE || !is_obstacle_class(o_.obstacle_classes, a.membership_class))
+      continue;
+    if (!std::isfinite(a.x) || !std::isfinite(a.y)) {
+      ++dropped_;
+      continue;
     }
-    vx = attribute(ob, "vx", vx), vy = attribute(ob, "vy", vy);
-    planner_.set_obstacle(tr.id, x, y, attribute(ob, "radius", o_.default_obstacle_radius), vx, vy);
-    tr.x = x, tr.y = y, tr.seen = stamp;
+    const double x = t.transform.translation.x + c * a.x - s * a.y, y = t.transform.translation.y + s * a.x + c * a.y;
+    const double vx = std::isfinite(a.vx) ? c * a.vx - s * a.vy : 0.0, vy = std::isfinite(a.vy) ? s * a.vx + c * a.vy : 0.0;
+    const double var = std::max(a.covariance[0], a.covariance[5]);
+    const double r = o_.default_obstacle_radius + o_.anchor_sigmas * (std::isfinite(var) && var > 0 ? std::sqrt(var) : 0.0);
+    const std::string key = prefix + std::to_string(a.id);
+    update_track(key, x, y, r, vx, vy, true, stamp);
+    seen.insert(key);
+  }
+  for (auto it = tracks_.lower_bound(prefix); it != tracks_.end() && it->first.compare(0, prefix.size(), prefix) == 0;) {
+    if (seen.count(it->first)) {
+      ++it;
+      continue;
+    }
+    planner_.remove_obstacle(it->second.id);
+    it = tracks_.erase(it);
     obstacles_dirty_ = true;
   }
 }
@@ -216,6 +329,8 @@ NodeOptions read_options(ros::NodeHandle& pnh) {
       .get_positive("obstacle_timeout", o.obstacle_timeout)
       .get_non_negative("default_obstacle_radius", o.default_obstacle_radius)
       .get("obstacle_classes", o.obstacle_classes)
+      .get("use_world_model", o.use_world_model)
+      .get_non_negative("anchor_sigmas", o.anchor_sigmas)
       .get("frame_id", o.frame_id)
       .get("base_frame", o.base_frame);
   return o;
