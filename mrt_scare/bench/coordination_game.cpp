@@ -40,6 +40,9 @@ struct Game {
   std::normal_distribution<double> noise{0.0, 0.05};
   std::size_t checks = 0, conflicts = 0, changes = 0;
   std::vector<std::vector<double>> change_times = std::vector<std::vector<double>>(5);  // per robot, s
+  std::vector<int> last_held = std::vector<int>(5, -1);  // per robot, the last slot it held
+  std::vector<int> left = std::vector<int>(5, -1);       // per robot, the slot its last change left
+  std::size_t flips = 0;
 
   explicit Game(const ActivitySet& s) : set(s) {
     for (int r = 0; r < 5; ++r) {
@@ -77,13 +80,20 @@ struct Game {
     const CoordinationMessage m = c[static_cast<std::size_t>(r)].publish(t, Pose2D(p.x + noise(rng), p.y + noise(rng), 0), w);
     for (int j = 0; j < 5; ++j)
       if (j != r && uni(rng) >= 0.2) queue.push_back({t + 0.1 * uni(rng), j, m});
-    const int before = c[static_cast<std::size_t>(r)].own_slot();
     c[static_cast<std::size_t>(r)].step(t);
+    // A re-assignment: the robot takes a slot other than the last one it
+    // held, directly or after waiting (release before acquire) in between.
     const int after = c[static_cast<std::size_t>(r)].own_slot();
-    if (before >= 0 && after >= 0 && after != before) {  // a hand-over, not a wait
+    int& held = last_held[static_cast<std::size_t>(r)];
+    if (after >= 0 && held >= 0 && after != held) {
       ++changes;
-      change_times[static_cast<std::size_t>(r)].push_back(t);
+      auto& times = change_times[static_cast<std::size_t>(r)];
+      // A flip-flop: back to the slot it left less than 1 s ago.
+      flips += !times.empty() && t - times.back() < 1.0 && after == left[static_cast<std::size_t>(r)];
+      times.push_back(t);
+      left[static_cast<std::size_t>(r)] = held;
     }
+    if (after >= 0) held = after;
     drive(r, w);
     check();
   }
@@ -158,6 +168,7 @@ void print_windows(const Game& g, double duration) {
               static_cast<double>(busiest) / (duration / 10.0));
   std::printf("coordination_game_reassignments_max_in_any_10s_window: %zu count\n", worst);
   std::printf("coordination_game_robot_10s_windows_over_one: %zu of %zu count\n", over, windows);
+  std::printf("coordination_game_flip_flops_within_1s: %zu count\n", g.flips);
 }
 
 }  // namespace
