@@ -15,6 +15,8 @@ const char* kind_name(PayloadKind k) {
     case PayloadKind::PERCEPT: return "percept";
     case PayloadKind::CRISP_DATA: return "crisp_data";
     case PayloadKind::COMMANDS: return "commands";
+    case PayloadKind::WORLD_MODEL: return "world_model";
+    case PayloadKind::COORDINATION: return "coordination";
     case PayloadKind::RAW: return "raw";
   }
   return "?";
@@ -57,8 +59,11 @@ std::vector<TopicMapping> parse_list(const YamlReader& r, const YAML::Node& list
     if (kind == "percept") m.kind = PayloadKind::PERCEPT;
     else if (kind == "crisp_data") m.kind = PayloadKind::CRISP_DATA;
     else if (kind == "commands") m.kind = PayloadKind::COMMANDS;
+    else if (kind == "world_model") m.kind = PayloadKind::WORLD_MODEL;
+    else if (kind == "coordination") m.kind = PayloadKind::COORDINATION;
     else if (kind == "raw") m.kind = PayloadKind::RAW;
-    else r.fail(e["kind"], "kind must be percept, crisp_data, commands or raw, got '" + kind + "'");
+    else
+      r.fail(e["kind"], "kind must be percept, crisp_data, commands, world_model, coordination or raw, got '" + kind + "'");
     if (to_ros) {
       const std::string s = scalar(r, e, "scope", false, "all");
       if (s == "local") m.scope = DCDT_LOCAL_MSG;

@@ -16,6 +16,7 @@
 #include "mrt_dcdt/agora.h"
 #include "mrt_dcdt_bridge/bridge_member.h"
 #include "ros/conversions.h"
+#include "ros/team_conversions.h"
 
 using namespace mrt::dcdt;
 
@@ -75,6 +76,12 @@ class BridgeNode {
           pubs_[m.type] = nh.advertise<mrt_msgs::CrispDataArray>(m.topic, o.queue_size);
           break;
         case PayloadKind::COMMANDS: pubs_[m.type] = nh.advertise<mrt_msgs::CommandArray>(m.topic, o.queue_size); break;
+        case PayloadKind::WORLD_MODEL:
+          pubs_[m.type] = nh.advertise<mrt_msgs::WorldModel>(m.topic, o.queue_size);
+          break;
+        case PayloadKind::COORDINATION:
+          pubs_[m.type] = nh.advertise<mrt_msgs::CoordinationParameters>(m.topic, o.queue_size);
+          break;
         case PayloadKind::RAW: pubs_[m.type] = nh.advertise<std_msgs::String>(m.topic, o.queue_size); break;
       }
     }
@@ -131,6 +138,8 @@ class BridgeNode {
         case PayloadKind::PERCEPT: pub.publish(ros_conv::to_percept(*xml)); break;
         case PayloadKind::CRISP_DATA: pub.publish(ros_conv::to_crisp_data(*xml)); break;
         case PayloadKind::COMMANDS: pub.publish(ros_conv::to_commands(*xml)); break;
+        case PayloadKind::WORLD_MODEL: pub.publish(ros_conv::to_world_model(*xml)); break;
+        case PayloadKind::COORDINATION: pub.publish(ros_conv::to_coordination(*xml)); break;
         case PayloadKind::RAW: {
           std_msgs::String s;
           s.data = msg.payload_string();
@@ -176,6 +185,12 @@ class BridgeNode {
         break;
       case PayloadKind::COMMANDS:
         subscribe_kind<mrt_msgs::CommandArray>(nh, m, q, ros_conv::from_commands);
+        break;
+      case PayloadKind::WORLD_MODEL:
+        subscribe_kind<mrt_msgs::WorldModel>(nh, m, q, ros_conv::from_world_model);
+        break;
+      case PayloadKind::COORDINATION:
+        subscribe_kind<mrt_msgs::CoordinationParameters>(nh, m, q, ros_conv::from_coordination);
         break;
       case PayloadKind::RAW: {
         const boost::function<void(const ros::MessageEvent<std_msgs::String const>&)> cb =

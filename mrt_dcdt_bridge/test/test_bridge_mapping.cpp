@@ -65,3 +65,33 @@ TEST(BridgeMapping, ShippedApplicationConfigurationParses) {
 }
 
 }  // namespace
+
+namespace {
+
+// The team configuration (README "Team data"): MAP and SCARE both ways, as
+// the legacy types 23 and 24, without retransmission; the robot's Agora is
+// NETWORK with the Finder and no static channel; the tests' Agoras use
+// Finder ports of their own.
+TEST(BridgeMapping, ShippedTeamConfigurationParses) {
+  auto m = load_bridge_mapping(std::string(DCDT_CONFIG_DIR) + "/team_mapping.yaml");
+  ASSERT_EQ(m.to_ros.size(), 2u);
+  ASSERT_EQ(m.to_dcdt.size(), 2u);
+  EXPECT_EQ(m.to_ros[0].type, 23);
+  EXPECT_EQ(m.to_ros[0].kind, PayloadKind::WORLD_MODEL);
+  EXPECT_EQ(m.to_ros[0].topic, "team/world_models");
+  EXPECT_EQ(m.to_ros[1].type, 24);
+  EXPECT_EQ(m.to_ros[1].kind, PayloadKind::COORDINATION);
+  EXPECT_EQ(m.to_ros[1].topic, "scare/team");
+  EXPECT_EQ(m.to_dcdt[0].kind, PayloadKind::WORLD_MODEL);
+  EXPECT_EQ(m.to_dcdt[1].kind, PayloadKind::COORDINATION);
+  EXPECT_EQ(m.to_dcdt[1].warranty, DCDT_DW_NONE);
+  EXPECT_STREQ(kind_name(PayloadKind::WORLD_MODEL), "world_model");
+  EXPECT_STREQ(kind_name(PayloadKind::COORDINATION), "coordination");
+  auto c = load_agora_config(std::string(DCDT_CONFIG_DIR) + "/robot_agora.cfg");
+  EXPECT_TRUE(c.channels.empty());
+  auto t = load_agora_config(std::string(DCDT_TEST_DATA) + "/team_agora_map.cfg");
+  EXPECT_EQ(t.port, 7419);
+  EXPECT_EQ(t.multicast_addr, "239.255.0.19");
+}
+
+}  // namespace

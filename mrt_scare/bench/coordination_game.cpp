@@ -39,6 +39,10 @@ struct Game {
   std::uniform_real_distribution<double> uni{0.0, 1.0};
   std::normal_distribution<double> noise{0.0, 0.05};
   std::size_t checks = 0, conflicts = 0, changes = 0;
+  std::vector<std::vector<double>> change_times = std::vector<std::vector<double>>(5);  // per robot, s
+  std::vector<int> last_held = std::vector<int>(5, -1);  // per robot, the last slot it held
+  std::vector<int> left = std::vector<int>(5, -1);       // per robot, the slot its last change left
+  std::size_t flips = 0;
 
   explicit Game(const ActivitySet& s) : set(s) {
     for (int r = 0; r < 5; ++r) {
@@ -76,10 +80,20 @@ struct Game {
     const CoordinationMessage m = c[static_cast<std::size_t>(r)].publish(t, Pose2D(p.x + noise(rng), p.y + noise(rng), 0), w);
     for (int j = 0; j < 5; ++j)
       if (j != r && uni(rng) >= 0.2) queue.push_back({t + 0.1 * uni(rng), j, m});
-    const int before = c[static_cast<std::size_t>(r)].own_slot();
     c[static_cast<std::size_t>(r)].step(t);
+    // A re-assignment: the robot takes a slot other than the last one it
+    // held, directly or after waiting (release before acquire) in between.
     const int after = c[static_cast<std::size_t>(r)].own_slot();
-    changes += before >= 0 && after >= 0 && after != before;  // a hand-over, not a wait
+    int& held = last_held[static_cast<std::size_t>(r)];
+    if (after >= 0 && held >= 0 && after != held) {
+      ++changes;
+      auto& times = change_times[static_cast<std::size_t>(r)];
+      // A flip-flop: back to the slot it left less than 1 s ago.
+      flips += !times.empty() && t - times.back() < 1.0 && after == left[static_cast<std::size_t>(r)];
+      times.push_back(t);
+      left[static_cast<std::size_t>(r)] = held;
+    }
+    if (after >= 0) held = after;
     drive(r, w);
     check();
   }
@@ -136,6 +150,27 @@ struct Game {
   }
 };
 
+/// Per robot, the most re-assignments in any 10 s window (sliding), and
+/// the fixed 10 s windows [10k, 10k + 10) of any robot with more than one.
+void print_windows(const Game& g, double duration) {
+  std::size_t worst = 0, over = 0, windows = 0;
+  for (const auto& times : g.change_times) {
+    for (std::size_t i = 0, j = 0; i < times.size(); ++i) {
+      while (j < times.size() && times[j] < times[i] + 10.0) ++j;
+      worst = std::max(worst, j - i);
+    }
+    for (double w = 0.0; w + 10.0 <= duration + 1e-9; w += 10.0, ++windows)
+      over += std::count_if(times.begin(), times.end(), [w](double t) { return t >= w && t < w + 10.0; }) > 1;
+  }
+  std::size_t busiest = 0;
+  for (const auto& times : g.change_times) busiest = std::max(busiest, times.size());
+  std::printf("coordination_game_reassignments_busiest_robot_per_10s: %.3f count\n",
+              static_cast<double>(busiest) / (duration / 10.0));
+  std::printf("coordination_game_reassignments_max_in_any_10s_window: %zu count\n", worst);
+  std::printf("coordination_game_robot_10s_windows_over_one: %zu of %zu count\n", over, windows);
+  std::printf("coordination_game_flip_flops_within_1s: %zu count\n", g.flips);
+}
+
 }  // namespace
 
 void run_game(const ActivitySet& set) {
@@ -145,6 +180,7 @@ void run_game(const ActivitySet& set) {
   std::printf("coordination_game_cycles_checked: %zu count\n", g.checks);
   std::printf("coordination_game_consistent_cycles: %.3f %%\n", 100.0 * (1.0 - double(g.conflicts) / double(g.checks)));
   std::printf("coordination_game_reassignments_per_robot_per_10s: %.3f count\n", g.changes / 5.0 / (duration / 10.0));
+  print_windows(g, duration);
   // Drop-outs: 50 trials, each from a game settled for 20 s; the robot
   // holding a schema role if any, else robot4, falls silent.
   int worst = 0, worst_all = 0, failed = 0;

@@ -4,7 +4,7 @@
 //   to_ros:                        # DCDT -> ROS
 //     - type: MSG_FROM_VISION      # legacy name or number
 //       topic: vision/percepts
-//       kind: percept              # percept | crisp_data | commands | raw
+//       kind: percept              # percept | crisp_data | commands | world_model | coordination | raw
 //       scope: all                 # local | remote | all (default all)
 //   to_dcdt:                       # ROS -> DCDT
 //     - topic: motion/commands
@@ -20,7 +20,9 @@
 
 namespace mrt::dcdt {
 
-enum class PayloadKind { PERCEPT, CRISP_DATA, COMMANDS, RAW };
+/// WORLD_MODEL: mrt_msgs/WorldModel (MAP's team exchange); COORDINATION:
+/// mrt_msgs/CoordinationParameters (SCARE's team topic). README "Team data".
+enum class PayloadKind { PERCEPT, CRISP_DATA, COMMANDS, WORLD_MODEL, COORDINATION, RAW };
 const char* kind_name(PayloadKind k);
 
 struct TopicMapping {

@@ -6,6 +6,7 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
+#include <nav_msgs/GetPlan.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
@@ -14,14 +15,17 @@
 #include <ros/callback_queue.h>
 
 #include <cmath>
+#include <atomic>
 #include <csignal>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_scare/coordinator.h"
+#include "mrt_scare/path_cost.h"
 
 namespace mrt::scare {
 
@@ -32,6 +36,9 @@ struct CoordinatorNodeOptions {
   std::string frame = "world";      // ~frame of the poses and targets
   std::string team_topic = "/scare/team";
   CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence, ~listen
+  std::string cost = "straight_line";  // ~cost: straight_line | planner
+  std::string plan_service = "make_plan";  // ~plan_service (nav_msgs/GetPlan, SPIKE's)
+  PlannerCostOptions planner;       // ~plan_resolution, ~plan_max_age
 
   static CoordinatorNodeOptions read(ros_common::ParamReader& p) {
     CoordinatorNodeOptions o;
@@ -44,7 +51,13 @@ struct CoordinatorNodeOptions {
         .get_positive("drop_timeout", o.coordination.drop_timeout)
         .get_positive("min_confidence", o.coordination.min_confidence)
         .get_non_negative("listen", o.coordination.listen)
-        .get_non_negative("hand_back_penalty", o.coordination.hand_back_penalty);
+        .get_non_negative("hand_back_penalty", o.coordination.hand_back_penalty)
+        .get("cost", o.cost)
+        .get("plan_service", o.plan_service)
+        .get_positive("plan_resolution", o.planner.resolution)
+        .get_positive("plan_max_age", o.planner.max_age);
+    p.check(o.cost == "straight_line" || o.cost == "planner", "cost", "straight_line or planner");
+    p.check(!o.plan_service.empty(), "plan_service", "a non-empty service name");
     p.check(!o.robot_id.empty(), "robot_id", "a non-empty string");
     p.check(o.rate <= 1000, "rate", "a number in (0, 1000]");
     p.check(o.coordination.grace < o.coordination.drop_timeout, "grace", "a number < ~drop_timeout");
@@ -56,7 +69,10 @@ struct CoordinatorNodeOptions {
 class CoordinatorNode {
  public:
   CoordinatorNode(ros::NodeHandle& nh, const CoordinatorNodeOptions& o)
-      : frame_(o.frame), coord_(make(o)), slots_(coord_.set().slots()) {
+      : frame_(o.frame),
+        planner_(o.cost == "planner" ? std::make_shared<PlannerCost>(o.planner) : nullptr),
+        coord_(make(o, planner_)),
+        slots_(coord_.set().slots()) {
     team_pub_ = nh.advertise<mrt_msgs::CoordinationParameters>(o.team_topic, 20);
     crisp_pub_ = nh.advertise<mrt_msgs::CrispDataArray>("scare/crisp", 5);
     job_pub_ = nh.advertise<std_msgs::String>("scare/job", 5, true);
@@ -68,6 +84,15 @@ class CoordinatorNode {
     timer_ = nh.createTimer(ros::Duration(1.0 / o.rate), &CoordinatorNode::on_timer, this);
     diag_.setHardwareID("scare_coordinator/" + o.robot_id);
     diag_.add("coordination", this, &CoordinatorNode::diagnose);
+    if (planner_) {
+      plan_client_ = nh.serviceClient<nav_msgs::GetPlan>(o.plan_service);
+      plan_thread_ = std::thread([this] { plan_loop(); });
+    }
+  }
+
+  ~CoordinatorNode() {
+    stop_ = true;
+    if (plan_thread_.joinable()) plan_thread_.join();
   }
 
   /// The leaving message, so teammates re-assign at once.
@@ -80,10 +105,50 @@ class CoordinatorNode {
   }
 
  private:
-  static Coordinator make(const CoordinatorNodeOptions& o) {
+  static Coordinator make(const CoordinatorNodeOptions& o, std::shared_ptr<const CostModel> cost) {
     ActivitySet set = load_activities(o.activities);
     RobotSpec self = set.robot_or_default(o.robot_id);
-    return Coordinator(std::move(set), std::move(self), o.coordination);
+    return Coordinator(std::move(set), std::move(self), o.coordination, std::move(cost));
+  }
+
+  // ~cost planner: asks the planner's GetPlan service (SPIKE's make_plan)
+  // for the targets PlannerCost queues, one at a time, off the cycle.
+  void plan_loop() {
+    while (!stop_ && ros::ok()) {
+      const double now = ros::Time::now().toSec();
+      const auto q = planner_->next_query(now);
+      if (!q) {
+        ros::WallDuration(0.02).sleep();
+        continue;
+      }
+      nav_msgs::GetPlan srv;
+      srv.request.start.header.frame_id = srv.request.goal.header.frame_id = frame_;
+      srv.request.start.header.stamp = srv.request.goal.header.stamp = ros::Time(now);
+      srv.request.start.pose = ros_common::to_pose(q->first);
+      srv.request.goal.pose.position.x = q->second.x;
+      srv.request.goal.pose.position.y = q->second.y;
+      srv.request.goal.pose.orientation.w = 1.0;
+      if (!plan_client_.call(srv)) {  // no planner (yet): straight lines meanwhile
+        ++plan_failures_;
+        ROS_WARN_THROTTLE(10, "scare_coordinator: planner service %s did not answer; straight-line times",
+                          plan_client_.getService().c_str());
+        ros::WallDuration(0.5).sleep();
+        continue;
+      }
+      std::optional<double> length;
+      const auto& poses = srv.response.plan.poses;
+      if (!poses.empty()) {
+        double len = 0.0, x = q->first.x, y = q->first.y;
+        for (const auto& p : poses) {
+          len += std::hypot(p.pose.position.x - x, p.pose.position.y - y);
+          x = p.pose.position.x;
+          y = p.pose.position.y;
+        }
+        length = len;
+      }
+      planner_->record(q->first, q->second, length, now);
+      ++plans_;
+    }
   }
 
   void on_pose(const nav_msgs::Odometry& m) {
@@ -139,6 +204,7 @@ class CoordinatorNode {
   void on_timer(const ros::TimerEvent&) {
     if (!enabled_ || !pose_) return;
     const ros::Time now = ros::Time::now();
+    if (planner_) planner_->set_time(now.toSec());
     const CoordinationMessage c = coord_.publish(now.toSec(), *pose_, world_);
     mrt_msgs::CoordinationParameters m;
     m.header.stamp = now;
@@ -200,9 +266,14 @@ class CoordinatorNode {
     st.add("job changes", changes_);
     st.add("hand-backs", hand_backs_);
     st.add("dropped messages", dropped_);
+    if (planner_) {
+      st.add("plans", plans_.load());
+      st.add("planner failures", plan_failures_.load());
+    }
   }
 
   std::string frame_;
+  std::shared_ptr<PlannerCost> planner_;  // ~cost planner, else null
   Coordinator coord_;
   std::vector<Slot> slots_;
   std::optional<Pose2D> pose_;
@@ -215,6 +286,10 @@ class CoordinatorNode {
   ros::Subscriber team_sub_, pose_sub_, world_sub_, enable_sub_, hand_back_sub_;
   ros::Timer timer_;
   diagnostic_updater::Updater diag_;
+  ros::ServiceClient plan_client_;
+  std::thread plan_thread_;
+  std::atomic<bool> stop_{false};
+  std::atomic<std::size_t> plans_{0}, plan_failures_{0};
 };
 
 }  // namespace mrt::scare
