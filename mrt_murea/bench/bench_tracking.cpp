@@ -1,7 +1,6 @@
 // murea_bench, part 2: tracking along a figure eight, kidnapping, and the
 // MCL (amcl algorithm) baseline on the same recordings.
 #include <chrono>
-#include <ctime>
 #include <iostream>
 
 #include "bench_common.h"
@@ -14,14 +13,6 @@ using mrt::common::angle_diff;
 using mrt::common::kPi;
 
 namespace {
-
-// CPU time of the calling thread (ms): what one core spends on an update,
-// whatever else the machine runs.
-double thread_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
 
 // One recorded run: the true pose, odometry's motion from the previous
 // frame (robot frame) with its covariance, and the frame's percepts.
