@@ -42,7 +42,7 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
                        const Noise& nz, int n) {
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> ux(-9.0, 9.0), uy(-6.0, 6.0), ut(-kPi, kPi);
-  std::vector<double> times, cells, sizes, err_xy, err_t, est_xy, est_t;
+  std::vector<double> times, cpu, cells, sizes, err_xy, err_t, est_xy, est_t;
   std::vector<Frame> frames;
   int correct = 0, flagged = 0, timeouts = 0;
   mrt::cli::Progress progress("murea_bench " + name, n);
@@ -55,6 +55,7 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
     f.result = loc.localize(f.percepts);
     const mrt::murea::Result& r = f.result;
     times.push_back(r.time_ms);
+    cpu.push_back(r.cpu_ms);
     cells.push_back(static_cast<double>(r.cells));
     sizes.push_back(static_cast<double>(f.percepts.size()));
     timeouts += r.complete ? 0 : 1;
@@ -79,6 +80,9 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
             << name << "_time_median: " << percentile(times, 0.5) << " ms\n"
             << name << "_time_p95: " << percentile(times, 0.95) << " ms\n"
             << name << "_time_max: " << percentile(times, 1.0) << " ms\n"
+            << name << "_cpu_time_median: " << percentile(cpu, 0.5) << " ms\n"
+            << name << "_cpu_time_p95: " << percentile(cpu, 0.95) << " ms\n"
+            << name << "_cpu_time_max: " << percentile(cpu, 1.0) << " ms\n"
             << name << "_cells_median: " << percentile(cells, 0.5) << " count\n"
             << name << "_error_xy_median: " << percentile(err_xy, 0.5) << " m\n"
             << name << "_error_xy_p95: " << percentile(err_xy, 0.95) << " m\n"
@@ -94,11 +98,15 @@ std::vector<Frame> run(const std::string& name, const mrt::sim::World& world, co
 // Accuracy versus timeout: the anytime search cut at 1 ... 20 ms on the
 // first frames of a run; a pose is correct within 0.3 m and 10 degrees of
 // the truth or of its mirror.
-void timeout_table(const mrt::murea::FeatureMap& map, const std::vector<Frame>& frames) {
+// `cpu`: the deadline counts the thread's CPU time (one core's budget,
+// independent of the machine's load); else wall-clock time.
+void timeout_table(const mrt::murea::FeatureMap& map, const std::vector<Frame>& frames, bool cpu) {
   const std::size_t count = std::min<std::size_t>(frames.size(), 200);
+  const std::string prefix = cpu ? "timeout_cpu_" : "timeout_";
   for (const double ms : {1.0, 2.0, 5.0, 10.0, 20.0}) {
     mrt::murea::SearchOptions opt;
     opt.timeout = ms / 1000.0;
+    opt.timeout_cpu = cpu;
     const mrt::murea::Localizer loc(map, opt);
     int correct = 0, complete = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -109,8 +117,8 @@ void timeout_table(const mrt::murea::FeatureMap& map, const std::vector<Frame>& 
       complete += r.complete ? 1 : 0;
     }
     const double pct = 100.0 / std::max<std::size_t>(1, count);
-    std::cout << "timeout_" << ms << "ms_correct: " << correct * pct << " %\n"
-              << "timeout_" << ms << "ms_complete: " << complete * pct << " %\n";
+    std::cout << prefix << ms << "ms_correct: " << correct * pct << " %\n"
+              << prefix << ms << "ms_complete: " << complete * pct << " %\n";
   }
 }
 
@@ -120,7 +128,7 @@ void timeout_table(const mrt::murea::FeatureMap& map, const std::vector<Frame>& 
 void window_run(const mrt::murea::FeatureMap& map, const std::vector<Frame>& frames) {
   std::mt19937_64 rng(7);
   std::normal_distribution<double> n01(0.0, 1.0);
-  std::vector<double> times, err;
+  std::vector<double> times, cpu, err;
   int correct = 0;
   const std::size_t count = std::min<std::size_t>(frames.size(), 200);
   for (std::size_t i = 0; i < count; ++i) {
@@ -132,12 +140,15 @@ void window_run(const mrt::murea::FeatureMap& map, const std::vector<Frame>& fra
     opt.heading_range = std::array<double, 2>{pt - w, pt + w};
     const mrt::murea::Result r = mrt::murea::Localizer(map, opt).localize(f.percepts);
     times.push_back(r.time_ms);
+    cpu.push_back(r.cpu_ms);
     err.push_back(std::hypot(r.estimate.mean.x - f.truth.x, r.estimate.mean.y - f.truth.y));
     correct += near(r.estimate.mean, f.truth) ? 1 : 0;
   }
   std::cout << "window_correct: " << 100.0 * correct / std::max<std::size_t>(1, count) << " %\n"
             << "window_time_median: " << percentile(times, 0.5) << " ms\n"
             << "window_time_p95: " << percentile(times, 0.95) << " ms\n"
+            << "window_cpu_time_median: " << percentile(cpu, 0.5) << " ms\n"
+            << "window_cpu_time_p95: " << percentile(cpu, 0.95) << " ms\n"
             << "window_error_xy_median: " << percentile(err, 0.5) << " m\n";
 }
 
@@ -163,19 +174,23 @@ int main(int argc, char** argv) {
   // The simulator's own default camera noise (2 % of the distance, 0.01
   // rad), its 6 m range, and 10 spurious points per frame.
   run("global_sim_noise", world, loc, Noise{6.0, 0.0, 0.02, 0.01, 10}, n);
-  timeout_table(map, frames);
+  timeout_table(map, frames, false);
+  timeout_table(map, frames, true);
   window_run(map, frames);
   tracking_benchmarks(world, map, seconds);
 
-  double t_search = 0.0, t_exh = 0.0;
+  double t_search = 0.0, t_exh = 0.0, c_search = 0.0, c_exh = 0.0;
   int identical = 0;
   const int checked = std::min(m, n);
   mrt::cli::Progress progress("murea_bench exhaustive", checked);
   for (int i = 0; i < checked; ++i) {
     progress.update(i);
+    const double c0 = thread_cpu_ms();
     const mrt::murea::Result e = loc.exhaustive(frames[i].percepts);
+    c_exh += thread_cpu_ms() - c0;
     t_exh += e.time_ms;
     t_search += frames[i].result.time_ms;
+    c_search += frames[i].result.cpu_ms;
     if (e.best.evidence == frames[i].result.best.evidence) ++identical;
     else std::cerr << "NOT EXACT: frame " << i << " search " << frames[i].result.best.evidence << " exhaustive "
                    << e.best.evidence << '\n';
@@ -184,6 +199,8 @@ int main(int argc, char** argv) {
   std::cout << "exhaustive_checked: " << checked << " count\n"
             << "exhaustive_identical_best_evidence: " << identical << " count\n"
             << "exhaustive_time_mean: " << t_exh / std::max(1, checked) << " ms\n"
-            << "speedup_vs_exhaustive: " << (t_search > 0 ? t_exh / t_search : 0.0) << " x\n";
+            << "speedup_vs_exhaustive: " << (t_search > 0 ? t_exh / t_search : 0.0) << " x\n"
+            << "exhaustive_cpu_time_mean: " << c_exh / std::max(1, checked) << " ms\n"
+            << "speedup_vs_exhaustive_cpu: " << (c_search > 0 ? c_exh / c_search : 0.0) << " x\n";
   return identical == checked ? 0 : 1;
 }

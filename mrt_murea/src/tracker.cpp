@@ -105,8 +105,12 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   out.search = loc.localize(percepts);
   const Result& r = out.search;
   out.collapsed = r.best.evidence < opt_.collapse_fraction * total || total <= 0.0;
-  if (out.collapsed || (r.ambiguous && !opt_.track_ambiguous)) {
-    // Nothing trustworthy, or two modes: stay lost, keep the last pose.
+  // A search cut short by its timeout has not looked for the runner-up: its
+  // best may be one of two modes (the symmetric field's mirror) as likely
+  // as the other, so it is not tracked either (unless track_ambiguous).
+  const bool undecided = r.ambiguous || !r.complete;
+  if (out.collapsed || (undecided && !opt_.track_ambiguous)) {
+    // Nothing trustworthy, two modes, or not known: stay lost, keep the last pose.
     out.lost = true;
     out.pose = pose_;
     out.covariance = cov_;

@@ -212,6 +212,28 @@ TEST(Search, TimeoutReturnsTheBestSoFar) {
   EXPECT_LE(r.best.evidence, static_cast<double>(ps.size()));
 }
 
+// The same with the deadline in the thread's CPU time (timeout_cpu): cut
+// short as well; a complete search reports its CPU time, which a single
+// thread cannot spend faster than wall-clock time passes.
+TEST(Search, CpuTimeoutReturnsTheBestSoFar) {
+  mrt::sim::World w = mrt::sim::load_world(MRT_MUREA_DATA "/msl_field.yaml");
+  const FeatureMap map(w);
+  SearchOptions opt;
+  opt.timeout = 1e-7;
+  opt.timeout_cpu = true;
+  std::vector<Percept> ps;
+  for (const auto& s : mrt::sim::vision_percepts(w, {}, Pose2D(1, 2, 3), mrt::sim::SensorsConfig{}))
+    if (s.membership_class == "Line") ps.push_back({FeatureClass::Line, "", s.distance, s.bearing, 1.0});
+  const Result r = Localizer(map, opt).localize(ps);
+  EXPECT_FALSE(r.complete);
+  EXPECT_DOUBLE_EQ(Localizer(map, opt).evidence(r.best.pose, ps), r.best.evidence);
+  opt.timeout = 0.0;  // no deadline: complete
+  const Result full = Localizer(map, opt).localize(ps);
+  EXPECT_TRUE(full.complete);
+  EXPECT_GT(full.cpu_ms, 0.0);
+  EXPECT_LE(full.cpu_ms, full.time_ms + 0.01);
+}
+
 // Without usable percepts every pose has evidence 0: ambiguous; unusable
 // percepts (non-finite, negative range, zero reliability) are ignored.
 TEST(Search, NoUsablePercepts) {

@@ -193,12 +193,13 @@ int main(int argc, char** argv) {
   mn::NodeOptions o;
   std::vector<double> accuracy{0.05, 1.0};
   o.tracker.search.timeout = 0.05;
+  o.tracker.search.timeout_cpu = true;  // as murea_node: CPU time of this thread
   app.add_option("--map", o.map_file, "mrt_sim world file (YAML)")->required();
   app.add_option("--bag", bag_file, "bag with /NS/percepts and /NS/odom or tf (/NS/ground_truth optional)")->required();
   app.add_option("--robot", robot, "the robot's namespace NS (frames NS/odom, NS/base_link)")->required();
   app.add_option("--out", out_file, "CSV: stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode")->required();
   app.add_option("--accuracy", accuracy, "lattice spacing: XY (m) THETA (deg), default 0.05 1")->expected(2);
-  app.add_option("--timeout", o.tracker.search.timeout, "seconds per search (0 = no limit), default 0.05");
+  app.add_option("--timeout", o.tracker.search.timeout, "seconds of CPU time per search (0 = no limit), default 0.05");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   o.tracker.search.accuracy_xy = accuracy[0];
   o.tracker.search.accuracy_theta = mrt::common::deg_to_rad(accuracy[1]);

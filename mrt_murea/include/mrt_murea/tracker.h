@@ -27,7 +27,8 @@ struct TrackerOptions {
   int collapse_frames = 3;
   /// A global result is accepted (tracking starts) when its evidence is at
   /// least collapse_fraction of the percepts' total and, unless this is
-  /// true, it is not ambiguous; else the next frame is searched globally too.
+  /// true, it is not ambiguous and the search completed (a timed-out search
+  /// does not know its runner-up); else the next frame is searched globally too.
   bool track_ambiguous = false;
   /// After each accepted search, the pose is fitted to the matched
   /// percepts by least squares, fused with odometry's prediction while

@@ -31,6 +31,8 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   ParamReader::check(s.accuracy_theta <= 1.0, "accuracy_theta", "a number of radians in (0, 1]");
   s.timeout = 0.05;
   p.get_non_negative("timeout", s.timeout);
+  s.timeout_cpu = true;  // the node's thread's CPU time: a loaded machine does not cut searches short
+  p.get("timeout_cpu", s.timeout_cpu);
   for (int c = 0; c < kFeatureClassCount; ++c) {
     std::string name = std::string("tolerance_") + to_string(static_cast<FeatureClass>(c));
     for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
