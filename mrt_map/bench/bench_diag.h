@@ -39,6 +39,7 @@ struct BallDiag {
     by_distance[nearest < 2.0 ? 0 : nearest < 4.0 ? 1 : 2].add(e);
     by_observers[observers >= 2 ? 2 : observers].add(e);
   }
+  double in_view_share() const { return steps ? static_cast<double>(visible) / static_cast<double>(steps) : NAN; }
   void print() {
     std::sort(errors.begin(), errors.end());
     double big = 0.0, all = 0.0;
