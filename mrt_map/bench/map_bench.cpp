@@ -2,7 +2,7 @@
 // ball and 5 opponents moving, a camera model per robot), against the
 // simulation's ground truth; then the full-cycle time of 50 objects x 5
 // robots. Prints `name: value unit` lines (scripts/bench.sh).
-//   map_bench [minutes=10] [seed=1] [model=config/robocup.yaml]
+//   map_bench [minutes=10] [seed=1] [model=config/robocup.yaml] [--team-rate 10] [--team-latency 0.05]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,8 +25,8 @@ using bench::TeamSim;
 namespace {
 
 constexpr double kDt = 1.0 / 30.0;       // camera and MAP rate
-constexpr double kTeamPeriod = 0.1;      // team exchange, 10 Hz
-constexpr double kTeamLatency = 0.05;    // s, network delay
+double g_team_period = 0.1;      // team exchange, 10 Hz (--team-rate)
+double g_team_latency = 0.05;    // s, network delay (--team-latency)
 
 struct Stats {
   double se = 0.0;  // squared errors within 5 m of the nearest teammate
@@ -148,6 +148,7 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
     if (!best) continue;
     if (last_id[o] >= 0 && last_id[o] != static_cast<long>(best->id)) {
       ++switches;
+      diag.count(o);
       ++(matched_before ? diag.while_tracked : diag.at_reacquisition);
       if (std::getenv("MAP_BENCH_DEBUG")) {
         const Anchor* old = nullptr;
@@ -263,9 +264,9 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
         score_ball(*alone[i], ball_class, t, truth, alone_stats[i]);
       }
       if (t >= next_team)
-        network.push_back({t + kTeamLatency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
+        network.push_back({t + g_team_latency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
     }
-    if (t >= next_team) next_team += kTeamPeriod;
+    if (t >= next_team) next_team += g_team_period;
     count_anchors(*team[0], *alone[0], ball_class, opp_class, counts);
     for (int o = 0; o < static_cast<int>(sim.opponents().size()); ++o) {
       bool in_view = false;
@@ -358,8 +359,13 @@ int main(int argc, char** argv) {
   app.add_option("minutes", minutes, "simulated minutes of the team run")->check(CLI::PositiveNumber);
   app.add_option("seed", seed, "random seed");
   app.add_option("model", model_file, "conceptual model YAML")->check(CLI::ExistingFile);
+  double team_rate = 1.0 / g_team_period;
+  app.add_option("--team-rate", team_rate, "Hz, team exchange (default 10)")->check(CLI::PositiveNumber);
+  app.add_option("--team-latency", g_team_latency, "s, network delay of the team exchange (default 0.05)")
+      ->check(CLI::NonNegativeNumber);
   const int rc = mrt::cli::parse_cli(app, argc, argv);
   if (rc >= 0) return rc;
+  g_team_period = 1.0 / team_rate;
   const ConceptualModel model = ConceptualModel::load(model_file);
   cycle_time(model);
   team_run(model, minutes, seed, true);
