@@ -197,6 +197,31 @@ std::tuple<Stats, double, double> summarise(const std::vector<Stats>& team_stats
   return {team_all, best_alone_rmse, best_alone_avail};
 }
 
+// The `map_<tag>...` lines of one scenario.
+void print_run(const char* tag, double minutes, const std::vector<Stats>& team_stats,
+               const std::vector<Stats>& alone_stats, double in_view, long switches, std::size_t opponents,
+               const AnchorCounts& counts, long steps) {
+  const auto [team_all, best_alone_rmse, best_alone_avail] = summarise(team_stats, alone_stats);
+  const double per10 = static_cast<double>(switches) / static_cast<double>(opponents) /
+                       (minutes / 10.0);
+  auto line = [tag](const char* name, double value, const char* unit) {
+    std::printf("map_%s%s: %.4f %s\n", tag, name, value, unit);
+  };
+  line("sim_minutes", minutes, "min");
+  line("ball_rmse_team_within_5m_of_observer", team_all.rmse_obs(), "m");
+  line("ball_rmse_team_within_5m", team_all.rmse(), "m");
+  line("ball_rmse_team_all", team_all.rmse_all(), "m");
+  line("ball_rmse_best_single_within_5m", best_alone_rmse, "m");
+  line("ball_availability_team", 100.0 * team_all.availability(), "%");
+  line("ball_availability_best_single", 100.0 * best_alone_avail, "%");
+  line("ball_in_view_of_a_robot", 100.0 * in_view, "%");
+  line("opponent_id_switches", static_cast<double>(switches), "count");
+  line("opponent_id_switches_per_opponent_per_10min", per10, "count");
+  line("confirmed_opponent_anchors_team_mean", counts.robots / steps, "count (truth: 5)");
+  line("confirmed_opponent_anchors_single_mean", counts.alone_robots / steps, "count");
+  line("confirmed_ball_anchors_team_mean", counts.balls / steps, "count (truth: 1)");
+}
+
 // The two scenarios. `random` (the first one): every robot on random
 // waypoints, 6 m camera range, 90 % detection. `team` (the default since):
 // both teams play (team_sim.cpp) and the camera sees as far as the
@@ -277,25 +302,8 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
     switches += identity_switches(*team[0], opp_class, sim, last_id, was_matched, switch_diag);
   }
   progress.finish();
-  const auto [team_all, best_alone_rmse, best_alone_avail] = summarise(team_stats, alone_stats);
-  const double per10 = static_cast<double>(switches) / static_cast<double>(sim.opponents().size()) /
-                       (minutes / 10.0);
-  auto line = [tag](const char* name, double value, const char* unit) {
-    std::printf("map_%s%s: %.4f %s\n", tag, name, value, unit);
-  };
-  line("sim_minutes", minutes, "min");
-  line("ball_rmse_team_within_5m_of_observer", team_all.rmse_obs(), "m");
-  line("ball_rmse_team_within_5m", team_all.rmse(), "m");
-  line("ball_rmse_team_all", team_all.rmse_all(), "m");
-  line("ball_rmse_best_single_within_5m", best_alone_rmse, "m");
-  line("ball_availability_team", 100.0 * team_all.availability(), "%");
-  line("ball_availability_best_single", 100.0 * best_alone_avail, "%");
-  line("ball_in_view_of_a_robot", 100.0 * ball_diag.in_view_share(), "%");
-  line("opponent_id_switches", static_cast<double>(switches), "count");
-  line("opponent_id_switches_per_opponent_per_10min", per10, "count");
-  line("confirmed_opponent_anchors_team_mean", counts.robots / steps, "count (truth: 5)");
-  line("confirmed_opponent_anchors_single_mean", counts.alone_robots / steps, "count");
-  line("confirmed_ball_anchors_team_mean", counts.balls / steps, "count (truth: 1)");
+  print_run(tag, minutes, team_stats, alone_stats, ball_diag.in_view_share(), switches, sim.opponents().size(), counts,
+            steps);
   if (!team_play) return;  // the diagnostics of the default scenario only
   ball_diag.print();
   switch_diag.print(sim.opponents().size(), minutes);
