@@ -39,6 +39,7 @@ struct BallDiag {
     by_distance[nearest < 2.0 ? 0 : nearest < 4.0 ? 1 : 2].add(e);
     by_observers[observers >= 2 ? 2 : observers].add(e);
   }
+  double in_view_share() const { return steps ? static_cast<double>(visible) / static_cast<double>(steps) : NAN; }
   void print() {
     std::sort(errors.begin(), errors.end());
     double big = 0.0, all = 0.0;
@@ -73,15 +74,23 @@ struct SwitchDiag {
   long at_reacquisition = 0;  // the opponent had no anchor within 0.5 m the step before
   long while_tracked = 0;     // it had one (a swap: crossing, or a duplicate taking over)
   long unmatched_steps = 0, matched_steps = 0;
+  std::vector<long> per_opponent;  // switches of each opponent (index 0: their goalkeeper in team play)
+  void count(std::size_t o) {
+    if (per_opponent.size() <= o) per_opponent.resize(o + 1, 0);
+    ++per_opponent[o];
+  }
   // Episodes in which an opponent is in no robot's view (range, occlusion)
   // for longer than 1 s: indistinguishable opponents, so each is a chance
   // for a re-identification to pick the wrong one.
   std::vector<double> unseen_for;
+  std::vector<long> episodes_by_opponent;
   long unseen_episodes = 0;
   void visibility(std::size_t o, bool in_view, double dt) {
     if (unseen_for.size() <= o) unseen_for.resize(o + 1, 0.0);
+    if (episodes_by_opponent.size() <= o) episodes_by_opponent.resize(o + 1, 0);
     if (in_view) {
       unseen_episodes += unseen_for[o] > 1.0;
+      episodes_by_opponent[o] += unseen_for[o] > 1.0;
       unseen_for[o] = 0.0;
     } else {
       unseen_for[o] += dt;
@@ -92,6 +101,12 @@ struct SwitchDiag {
     std::printf("diag_id_switches_at_reacquisition_per_opp_10min: %.2f count\n", k * static_cast<double>(at_reacquisition));
     std::printf("diag_id_switches_while_tracked_per_opp_10min: %.2f count\n", k * static_cast<double>(while_tracked));
     std::printf("diag_opponent_unseen_by_all_over_1s_per_opp_10min: %.2f count\n", k * static_cast<double>(unseen_episodes));
+    std::string each;
+    for (std::size_t o = 0; o < opponents; ++o) each += " " + std::to_string(o < per_opponent.size() ? per_opponent[o] : 0);
+    std::printf("diag_id_switches_by_opponent:%s count\n", each.c_str());
+    each.clear();
+    for (long c : episodes_by_opponent) each += " " + std::to_string(c);
+    std::printf("diag_opponent_unseen_by_all_over_1s_by_opponent:%s count\n", each.c_str());
     std::printf("diag_opponent_tracked: %.2f %% of steps\n",
                 100.0 * static_cast<double>(matched_steps) / static_cast<double>(matched_steps + unmatched_steps));
   }

@@ -1,5 +1,6 @@
 #include "team_sim.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrt::map::bench {
@@ -8,7 +9,7 @@ namespace {
 constexpr double kHalfX = 9.0, kHalfY = 6.0;  // MSL field, as mrt_sim's msl_field.yaml
 }
 
-TeamSim::TeamSim(unsigned seed, int teammates, int opponents) : rng_(seed) {
+TeamSim::TeamSim(unsigned seed, bool team_play, int teammates, int opponents) : team_play_(team_play), rng_(seed) {
   for (int i = 0; i < teammates; ++i) {
     Body b;
     b.p = random_point();
@@ -25,6 +26,50 @@ TeamSim::TeamSim(unsigned seed, int teammates, int opponents) : rng_(seed) {
   }
   ball_.p = Vec2::Zero();
   ball_.radius = 0.11;
+  offset_mates_.assign(mates_.size(), Vec2::Zero());
+  offset_opps_.assign(opps_.size(), Vec2::Zero());
+}
+
+// Team play, as an MSL team moves (each team the same way, mirrored): the
+// first robot keeps its goal (on the goal line, following the ball's y);
+// the field player nearest to the ball (hysteresis 1 m) chases it (2 m/s,
+// to the ball's position 0.3 s ahead, stopping in contact); the others hold their slots relative to the ball
+// (defender 4.5 m behind it, two wings 1.5 m behind and 3.5 m to the
+// sides, a forward 2.5 m ahead), each wandering up to +-1 m around its slot
+// (renewed every 3 s), at 1.5 m/s. `side` -1: own goal at x = -9 m.
+void TeamSim::set_goals(std::vector<Body>& team, std::vector<Vec2>& offsets, int& chaser, double side) {
+  const Vec2 b = ball_.p;
+  auto dist = [&](int i) { return (team[static_cast<std::size_t>(i)].p - b).norm(); };
+  const int n = static_cast<int>(team.size());
+  int nearest = -1;
+  for (int i = 1; i < n; ++i)
+    if (nearest < 0 || dist(i) < dist(nearest)) nearest = i;
+  if (chaser < 0 || (nearest >= 0 && dist(nearest) < dist(chaser) - 1.0)) chaser = nearest;
+  auto clamp_field = [](Vec2 p) {
+    return Vec2(std::clamp(p.x(), -kHalfX + 0.3, kHalfX - 0.3), std::clamp(p.y(), -kHalfY + 0.3, kHalfY - 0.3));
+  };
+  const double u = -side * b.x();  // the ball along the team's attack direction
+  const Vec2 slots[] = {Vec2(std::max(-7.0, u - 4.5), 0.5 * b.y()), Vec2(u - 1.5, b.y() + 3.5),
+                        Vec2(u - 1.5, b.y() - 3.5), Vec2(std::min(7.5, u + 2.5), -0.3 * b.y())};
+  for (int i = 0; i < n; ++i) {
+    Body& r = team[static_cast<std::size_t>(i)];
+    const Vec2& off = offsets[static_cast<std::size_t>(i)];
+    if (i == 0) {
+      r.goal = Vec2(side * 8.3 + 0.2 * off.x(), std::clamp(0.4 * b.y(), -1.2, 1.2));
+      r.speed = 1.5;
+    } else if (i == chaser) {
+      // Behind the ball as seen from the robot, touching it (a robot does
+      // not drive over the ball: its camera sees it in front of its body).
+      const Vec2 aim = b + 0.3 * ball_.v, to = aim - r.p;
+      const double gap = r.radius + ball_.radius + 0.05;
+      r.goal = clamp_field(to.norm() > gap ? Vec2(aim - to.normalized() * gap) : r.p);
+      r.speed = 2.0;
+    } else {
+      const Vec2& s = slots[static_cast<std::size_t>((i - 1) % 4)];
+      r.goal = clamp_field(Vec2(-side * s.x(), s.y()) + off);
+      r.speed = 1.5;
+    }
+  }
 }
 
 Vec2 TeamSim::random_point() {
@@ -34,9 +79,12 @@ Vec2 TeamSim::random_point() {
 
 void TeamSim::move(Body& b, double dt) {
   const Vec2 d = b.goal - b.p;
-  if (d.norm() < 0.2) b.goal = random_point();
-  // Bounded acceleration (3 m/s^2, an MSL robot's order of magnitude).
-  const Vec2 want = (b.goal - b.p).normalized() * b.speed;
+  if (d.norm() < 0.2 && !team_play_) b.goal = random_point();
+  // Bounded acceleration (3 m/s^2, an MSL robot's order of magnitude);
+  // in team play the robot slows down on its target (no overshoot).
+  const double dn = (b.goal - b.p).norm();
+  const double speed = team_play_ ? std::min(b.speed, 1.5 * dn) : b.speed;
+  const Vec2 want = dn > 1e-9 ? Vec2((b.goal - b.p) / dn * speed) : Vec2::Zero();
   const Vec2 dv = want - b.v;
   const double max_dv = 3.0 * dt;
   b.v += dv.norm() > max_dv ? Vec2(dv.normalized() * max_dv) : dv;
@@ -44,6 +92,17 @@ void TeamSim::move(Body& b, double dt) {
 }
 
 void TeamSim::step(double dt) {
+  if (team_play_) {
+    offset_timer_ -= dt;
+    if (offset_timer_ <= 0.0) {
+      std::uniform_real_distribution<double> u(-1.0, 1.0);
+      for (Vec2& o : offset_mates_) o = Vec2(u(rng_), u(rng_));
+      for (Vec2& o : offset_opps_) o = Vec2(u(rng_), u(rng_));
+      offset_timer_ = 3.0;
+    }
+    set_goals(mates_, offset_mates_, chaser_mates_, -1.0);
+    set_goals(opps_, offset_opps_, chaser_opps_, 1.0);
+  }
   for (Body& b : mates_) move(b, dt);
   for (Body& b : opps_) move(b, dt);
   // The ball: kicked every 2-4 s to a random velocity up to 4 m/s, rolling
@@ -109,9 +168,10 @@ std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose
                      int skip_opp) {
     const Vec2 d = target - me.p;
     const double dist = d.norm();
-    if (dist > cam.range || dist < 1e-3 || u(rng_) > cam.p_detect) return;
+    const double p_detect = cam.p_detect + (cam.p_detect_far - cam.p_detect) * dist / cam.range;
+    if (dist > cam.range || dist < 1e-3 || u(rng_) > p_detect) return;
     if (occluded(me.p, target, skip_mate, skip_opp)) return;
-    const double sd = cam.sigma_d0 + cam.sigma_d_rel * dist;
+    const double sd = cam.sigma_d0 + cam.sigma_d_rel * dist + cam.sigma_d_quad * dist * dist;
     // Measured relative to the TRUE pose; interpreted from the believed one.
     PerceptObject o;
     o.membership_class = cls;
@@ -131,7 +191,7 @@ std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose
     o.membership_class = "Ball";
     o.attributes["color"].symbol = "orange";
     const double dist = cam.range * std::sqrt(u(rng_)), b = 2 * M_PI * u(rng_);
-    o.attributes["distance"] = {dist, "", cam.sigma_d0 + cam.sigma_d_rel * dist, 1.0};
+    o.attributes["distance"] = {dist, "", cam.sigma_d0 + cam.sigma_d_rel * dist + cam.sigma_d_quad * dist * dist, 1.0};
     o.attributes["bearing"] = {b, "", cam.sigma_bearing, 1.0};
     out.push_back(std::move(o));
   }

@@ -24,8 +24,10 @@ struct CameraModel {
   double range = 6.0;           // m
   double sigma_d0 = 0.005;      // m
   double sigma_d_rel = 0.01;    // fraction of the distance
+  double sigma_d_quad = 0.0;    // m per m^2: sigma_d = d0 + rel d + quad d^2
   double sigma_bearing = 0.005; // rad
-  double p_detect = 0.9;
+  double p_detect = 0.9;        // at the robot
+  double p_detect_far = 0.9;    // at `range` (linear in between)
   double clutter_rate = 0.03;   // false balls per frame
   double pose_sigma = 0.02;     // m, self-localisation error
   double theta_sigma = 0.005;   // rad
@@ -33,7 +35,9 @@ struct CameraModel {
 
 class TeamSim {
  public:
-  explicit TeamSim(unsigned seed, int teammates = 5, int opponents = 5);
+  /// `team_play` false: every robot on random waypoints (the first
+  /// scenario). True: both teams play (see team_sim.cpp, set_goals).
+  explicit TeamSim(unsigned seed, bool team_play = false, int teammates = 5, int opponents = 5);
   void step(double dt);
   const std::vector<Body>& mates() const { return mates_; }
   const std::vector<Body>& opponents() const { return opps_; }
@@ -52,7 +56,12 @@ class TeamSim {
 
  private:
   void move(Body& b, double dt);
+  void set_goals(std::vector<Body>& team, std::vector<Vec2>& offsets, int& chaser, double side);
   Vec2 random_point();
+  bool team_play_ = false;  // (declared before rng_: initialised first)
+  std::vector<Vec2> offset_mates_, offset_opps_;  // each player's wandering around its slot
+  double offset_timer_ = 0.0;
+  int chaser_mates_ = -1, chaser_opps_ = -1;
   std::mt19937 rng_;
   std::vector<Body> mates_, opps_;
   Body ball_;

@@ -1,0 +1,76 @@
+// map_bench's world (bench/team_sim.*): the team-play scenario's
+// goalkeepers and the camera model's detection fall-off and noise law.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "team_sim.h"
+
+using namespace mrt::map;
+using mrt::map::bench::CameraModel;
+using mrt::map::bench::TeamSim;
+
+TEST(TeamSim, GoalkeepersKeepTheirGoals) {
+  // set_goals: the first robot of each team aims at x = side * 8.3 + 0.2 *
+  // offset (offset in [-1, 1]): [-8.5, -8.1] for the team, [8.1, 8.5] for
+  // the opponents, and y = clamp(0.4 * ball y, -1.2, 1.2). Allowed lag
+  // 0.15 m in x, 0.3 m in y (the target moves with the ball).
+  TeamSim sim(3, true);
+  const double dt = 1.0 / 30.0;
+  for (int k = 0; k < 600; ++k) sim.step(dt);  // 20 s to take position (up to 17 m at 1.5 m/s)
+  for (int k = 0; k < 1500; ++k) {             // then 50 s
+    sim.step(dt);
+    const Vec2& own = sim.mates()[0].p;
+    const Vec2& their = sim.opponents()[0].p;
+    ASSERT_GE(own.x(), -8.65) << k;
+    ASSERT_LE(own.x(), -7.95) << k;
+    ASSERT_GE(their.x(), 7.95) << k;
+    ASSERT_LE(their.x(), 8.65) << k;
+    ASSERT_LE(std::fabs(own.y()), 1.5) << k;
+    ASSERT_LE(std::fabs(their.y()), 1.5) << k;
+  }
+  // On random waypoints (the first scenario) nobody keeps a goal: over the
+  // same minute the first robot leaves the band |x| >= 7.95.
+  TeamSim random(3, false);
+  bool left = false;
+  for (int k = 0; k < 1800; ++k) {
+    random.step(dt);
+    left = left || std::fabs(random.mates()[0].p.x()) < 7.95;
+  }
+  EXPECT_TRUE(left);
+}
+
+TEST(TeamSim, CameraDetectionFallOffAndNoise) {
+  // p_detect 1 at the robot, 0 at range 8: p(d) = 1 - d / 8. sigma_d =
+  // 0.005 + 0.01 d + 0.001 d^2 (e.g. d = 4: 0.005 + 0.04 + 0.016 = 0.061).
+  // Over many frames, the ball detections of robot 0 (no clutter) number
+  // sum over in-view frames of (1 - d / 8), within 4 binomial sigmas.
+  CameraModel cam;
+  cam.range = 8.0;
+  cam.p_detect = 1.0;
+  cam.p_detect_far = 0.0;
+  cam.sigma_d_quad = 0.001;
+  cam.clutter_rate = 0.0;
+  TeamSim sim(5, true);
+  double expected = 0.0, variance = 0.0;
+  long detected = 0;
+  for (int k = 0; k < 6000; ++k) {
+    sim.step(1.0 / 30.0);
+    const double d = (sim.ball().p - sim.mates()[0].p).norm();
+    const bool in_view = sim.ball_in_view(0, cam);
+    if (in_view) {
+      const double p = 1.0 - d / 8.0;
+      expected += p;
+      variance += p * (1.0 - p);
+    }
+    RobotPose pose;
+    for (const PerceptObject& o : sim.see(0, cam, pose)) {
+      if (o.membership_class != "Ball") continue;
+      ASSERT_TRUE(in_view);
+      ++detected;
+      EXPECT_NEAR(o.attributes.at("distance").variability, 0.005 + 0.01 * d + 0.001 * d * d, 1e-12);
+    }
+  }
+  ASSERT_GT(expected, 500.0);  // the test means something
+  EXPECT_NEAR(static_cast<double>(detected), expected, 4.0 * std::sqrt(variance));
+}
