@@ -15,6 +15,7 @@
 #include "mrt_roby/crisp_builder.h"
 #include "mrt_roby/sonar_sectors.h"
 #include "mrt_scare/sequencer.h"
+#include "mrt_sim/sensors.h"
 #include "mrt_sim/simulator.h"
 #include "mrt_spike/map_sources.h"
 #include "mrt_spike/world_planner.h"
@@ -22,8 +23,6 @@
 namespace mrt::followme {
 
 namespace {
-
-double dist(const Point2D& a, const Point2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 /// Mr. BRIAN with Roby's rule base: crisp data in (the previous commands fed
 /// back), a body twist out through the AIRBoard's BrianMapping.
@@ -196,6 +195,14 @@ struct FollowMeSession::Impl {
   Point2D last_truth;
   Pose2D estimate;
   std::vector<std::string> closed;
+  sim::World known;  // what the robot's map holds: walls, closed doors, posts; no people
+
+  static sim::World map_of(const sim::World& w) {
+    sim::World m = w;
+    m.movers.clear();
+    m.ball.enabled = false;
+    return m;
+  }
 
   static FollowMeConfig configure(const FollowMeLoopOptions& o) {
     FollowMeConfig c = load_followme_config(o.config);
@@ -228,7 +235,8 @@ struct FollowMeSession::Impl {
         sectors(mounts(rc), roby::default_sectors(), rc.sensors.sonars.empty() ? 5.0 : rc.sensors.sonars[0].max_range),
         period(simulator.period(opt.brian_rate)),
         last_truth{rc.initial_pose.x, rc.initial_pose.y},
-        estimate(rc.initial_pose) {
+        estimate(rc.initial_pose),
+        known(map_of(simulator.world())) {
     if (!cfg.visitor.wander_to.empty()) wander = cfg.exhibits[cfg.exhibit_index(cfg.visitor.wander_to)];
     for (const auto& s : sectors.sectors()) sector_names.push_back(s.name);
     start_tour(cfg.tour, 0.0);
@@ -250,6 +258,7 @@ struct FollowMeSession::Impl {
   void close_door(const std::string& name, double now) {
     const Door& d = cfg.door(name);
     simulator.add_wall({d.a, d.b});
+    known.walls.push_back({d.a, d.b});
     planner.rebuild(simulator.world());
     closed.push_back(name);
     guide->invalidate_plan(now, "door_closed");
@@ -261,8 +270,7 @@ struct FollowMeSession::Impl {
     const sim::RobotState& st = simulator.robots()[r];
     const double now = simulator.time();
     if (st.encoders_ready) odometry.update(st.ticks);
-    if (st.sonar_ready)
-      for (std::size_t i = 0; i < st.sonar.size(); ++i) sectors.set_range(i, st.sonar[i], now);
+    if (st.sonar_ready) unmapped_echoes(st.sonar, now);
     if (st.vision_ready) {
       localization.frame(odometry, st.vision);
       std::vector<PersonPercept> persons;
@@ -278,6 +286,24 @@ struct FollowMeSession::Impl {
     const std::string door = crossed_door(cfg.doors, last_truth, truth);
     if (!door.empty()) res.doors.push_back({now, door});
     last_truth = truth;
+  }
+
+  // Mr. BRIAN's obstacle sectors hold what the map does not explain (people):
+  // an echo within kMapped of the range the map predicts from the
+  // localizer's pose is a wall or an exhibit, which SPIKE's plan already
+  // keeps clear of, and reads as no echo. Roby's avoidance rules, written
+  // for open ground, would otherwise refuse to turn into a 1 m door.
+  // Nearer than kTooClose every echo counts (the FollowVisitor goals are
+  // not planned by SPIKE).
+  void unmapped_echoes(const std::vector<double>& ranges, double now) {
+    constexpr double kMapped = 0.25;  // m
+    constexpr double kTooClose = 0.3; // m: nearer than this, a wall is an obstacle again
+    for (std::size_t i = 0; i < ranges.size() && i < rc.sensors.sonars.size(); ++i) {
+      const sim::SonarConfig& s = rc.sensors.sonars[i];
+      const double expected = sim::sonar_range(known, {}, estimate, s);
+      const bool mapped = ranges[i] > kTooClose && (std::abs(ranges[i] - expected) < kMapped || ranges[i] > expected);
+      sectors.set_range(i, mapped ? s.max_range : ranges[i], now);
+    }
   }
 
   // One guide cycle: the visitor decides, the guide decides, Mr. BRIAN drives.

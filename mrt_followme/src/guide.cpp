@@ -32,6 +32,7 @@ Guide::Guide(GuideOptions options, std::vector<Exhibit> tour) : opt_(options), t
 
 void Guide::enter(Job j, double t, const std::string& what) {
   job_ = j;
+  entered_ = t;
   events_.push_back({t, what, current_ < tour_.size() ? tour_[current_].name : ""});
   requested_ = waiting_ = false;
   look_ = still_ = 0.0;
@@ -137,7 +138,18 @@ GuideOutput Guide::wait_visitor(const GuideInput& in) {
     if (look_ >= opt_.look_time) looked_ = true;
   }
   const double dr = dist(v.position, xy(in.pose));
-  if (seen && looked_ && dr < opt_.ready_distance && dist(v.position, e.spot) > opt_.look_radius) {
+  // Ready: it has looked, left the spot and stands by the robot (one
+  // passing by on its way elsewhere is not ready).
+  if (seen && looked_ && dr < opt_.ready_distance && dist(v.position, e.spot) > 0.5 * opt_.look_radius &&
+      v.speed() < opt_.still_speed) {
+    next_exhibit(in.t);
+    enter(current_ == tour_.size() ? Job::kDone : Job::kReplan, in.t, current_ == tour_.size() ? "done" : "ready");
+    return out;
+  }
+  // The exception "no visit": the visitor stays by the robot (it looked
+  // while out of sight, or does not care for this exhibit): go on.
+  if (seen && dr < opt_.ready_distance && in.t - entered_ > opt_.max_wait) {
+    events_.push_back({in.t, "moved_on", e.name});
     next_exhibit(in.t);
     enter(current_ == tour_.size() ? Job::kDone : Job::kReplan, in.t, current_ == tour_.size() ? "done" : "ready");
     return out;
@@ -160,8 +172,10 @@ GuideOutput Guide::follow_visitor(const GuideInput& in) {
   const bool seen = in.t - v.last_seen < kSeen;
   const Point2D p = xy(in.pose);
   const double d = dist(p, v.position);
-  if (d > opt_.follow_distance + 0.3) {
-    const double k = (d - opt_.follow_distance) / d;
+  // out of sight: go closer to where it was last seen, to look round
+  const double keep = seen ? opt_.follow_distance : 1.0;
+  if (d > keep + 0.3) {
+    const double k = (d - keep) / d;
     out.goal = Point2D{p.x + (v.position.x - p.x) * k, p.y + (v.position.y - p.y) * k};
   }
   if (seen && v.speed() < opt_.still_speed && d < opt_.follow_distance + 0.6) {
@@ -175,7 +189,7 @@ GuideOutput Guide::follow_visitor(const GuideInput& in) {
     out.call_visitor = true;
     events_.push_back({in.t, "call", current_ < tour_.size() ? tour_[current_].name : ""});
   }
-  if (seen && called_ && in.t - called_at_ > 1.0 && d < opt_.ready_distance) {
+  if (seen && called_ && in.t - called_at_ > 1.0 && d < opt_.ready_distance && v.speed() < opt_.still_speed) {
     if (wandering_) ++wanders_;
     wandering_ = false;
     if (current_ == tour_.size()) {

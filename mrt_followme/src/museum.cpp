@@ -47,7 +47,7 @@ Point2D point(const YamlReader& r, const YAML::Node& m, const char* key, const s
 void read_guide(const YamlReader& r, const YAML::Node& n, GuideOptions& g) {
   r.map(n, "guide",
         {"arrive_tolerance", "lookahead", "keep_max", "keep_resume", "lost_time", "look_radius", "look_time",
-         "ready_distance", "wander_distance", "follow_distance", "still_speed", "call_after", "robot_radius",
+         "ready_distance", "wander_distance", "follow_distance", "still_speed", "call_after", "max_wait", "robot_radius",
          "safety_distance", "resolution"});
   g.arrive_tolerance = r.positive(n, "arrive_tolerance", g.arrive_tolerance);
   g.lookahead = r.positive(n, "lookahead", g.lookahead);
@@ -61,6 +61,7 @@ void read_guide(const YamlReader& r, const YAML::Node& n, GuideOptions& g) {
   g.follow_distance = r.positive(n, "follow_distance", g.follow_distance);
   g.still_speed = r.positive(n, "still_speed", g.still_speed);
   g.call_after = r.positive(n, "call_after", g.call_after);
+  g.max_wait = r.positive(n, "max_wait", g.max_wait);
   g.robot_radius = r.positive(n, "robot_radius", g.robot_radius);
   g.safety_distance = r.non_negative(n, "safety_distance", g.safety_distance);
   g.resolution = r.bounded(n, "resolution", g.resolution, 0.005, false, 1.0);
@@ -69,10 +70,11 @@ void read_guide(const YamlReader& r, const YAML::Node& n, GuideOptions& g) {
 
 void read_visitor(const YamlReader& r, const YAML::Node& n, VisitorOptions& v) {
   r.map(n, "visitor",
-        {"name", "color", "comfortable", "walk_speed", "look_time", "wander_after", "wander_to", "wander_stay"});
+        {"name", "color", "comfortable", "return_distance", "walk_speed", "look_time", "wander_after", "wander_to", "wander_stay"});
   v.name = r.string(n, "name", v.name, false, "visitor");
   v.color = r.string(n, "color", v.color, false, "visitor");
   v.comfortable = r.positive(n, "comfortable", v.comfortable);
+  v.return_distance = r.positive(n, "return_distance", v.return_distance);
   v.walk_speed = r.positive(n, "walk_speed", v.walk_speed);
   v.look_time = r.positive(n, "look_time", v.look_time);
   if (n["wander_after"]) v.wander_after = static_cast<int>(r.integer(n["wander_after"], "wander_after", 0, 1000));

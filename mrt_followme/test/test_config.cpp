@@ -16,7 +16,7 @@ TEST(Config, ShippedFile) {
   EXPECT_EQ(c.exhibit_index("vase"), 3u);
   EXPECT_DOUBLE_EQ(c.exhibits[3].stop.x, 15.0);
   EXPECT_DOUBLE_EQ(c.exhibits[3].spot.y, 3.0);
-  EXPECT_DOUBLE_EQ(c.guide.keep_max, 2.6);
+  EXPECT_DOUBLE_EQ(c.guide.keep_max, 2.8);
   EXPECT_EQ(c.visitor.wander_after, 2);
   EXPECT_EQ(c.visitor.wander_to, "globe");
   EXPECT_DOUBLE_EQ(c.door("north_door").b.y, 9.6);

@@ -69,12 +69,12 @@ TEST(Guide, WaitsForAVisitorLaggingBehind) {
   Guide g(GuideOptions{}, {kA});
   g.update({0.0, Pose2D(0, 0, 0), at(-1, 0, 0.0)});
   g.set_plan(line(0, 5), 0.0);
-  // 3 m behind (> keep_max 2.6): stand
+  // 3 m behind (> keep_max 2.8): stand
   GuideOutput out = g.update({0.1, Pose2D(0, 0, 0), at(-3, 0, 0.1)});
   EXPECT_FALSE(out.goal.has_value());
   EXPECT_TRUE(g.waiting_for_visitor());
-  // 2 m (> keep_resume 1.9): still waiting; 1.5 m: go on
-  EXPECT_FALSE(g.update({0.2, Pose2D(0, 0, 0), at(-2, 0, 0.2)}).goal.has_value());
+  // 2.5 m (> keep_resume 2.2): still waiting; 1.5 m: go on
+  EXPECT_FALSE(g.update({0.2, Pose2D(0, 0, 0), at(-2.5, 0, 0.2)}).goal.has_value());
   EXPECT_TRUE(g.update({0.3, Pose2D(0, 0, 0), at(-1.5, 0, 0.3)}).goal.has_value());
   // out of sight for 4.1 s (> lost_time 4): FollowVisitor to where it was
   g.update({4.4, Pose2D(0, 0, 0), at(-1.5, 0, 0.3)});
@@ -92,8 +92,12 @@ TEST(Guide, WaitsAtTheExhibitUntilTheVisitorIsReady) {
   EXPECT_EQ(g.job(), Job::kWaitVisitor);
   look(g, t, 5.0);
   EXPECT_EQ(g.job(), Job::kWaitVisitor);
-  // back at (4.5, 0.8): 1.30 m from the spot (> 1.0), 0.85 m from the
-  // robot (< ready_distance 1.6): visited, re-plan for b
+  // walking by at 0.7 m/s (on its way elsewhere): not ready
+  t += 0.1;
+  g.update({t, Pose2D(4.8, 0, 0), at(4.5, 0.8, t, 0.7, 0.0)});
+  EXPECT_EQ(g.job(), Job::kWaitVisitor);
+  // standing at (4.5, 0.8): 1.30 m from the spot (> 0.5), 0.85 m from the
+  // robot (< ready_distance 2.4): visited, re-plan for b
   t += 0.1;
   g.update({t, Pose2D(4.8, 0, 0), at(4.5, 0.8, t)});
   EXPECT_EQ(g.job(), Job::kReplan);
@@ -107,24 +111,24 @@ TEST(Guide, FollowsAWanderingVisitorCallsItAndReplans) {
   double t = 0.0;
   guide_to(g, t, 0.0, 5.0);
   look(g, t, 5.0);
-  // off to (5, 6): 4 m from the spot, 6 m from the robot (> 2.5 both)
+  // off to (5, 6): 4 m from the spot, 6 m from the robot (> 3 both)
   t += 0.1;
   g.update({t, Pose2D(4.8, 0, 0), at(5.0, 6.0, t, 0.0, 0.7)});
   ASSERT_EQ(g.job(), Job::kFollowVisitor);
   EXPECT_EQ(g.visited().size(), 1u);  // it had looked at a
-  // follow: the point 2 m short of the visitor on the line from the robot
+  // follow: the point 2.8 m short of the visitor on the line from the robot
   t += 0.1;
   GuideOutput out = g.update({t, Pose2D(4.8, 0, 0), at(5.0, 6.0, t)});
   ASSERT_TRUE(out.goal.has_value());
-  const double d = std::hypot(0.2, 6.0), k = (d - 2.0) / d;
+  const double d = std::hypot(0.2, 6.0), k = (d - 2.8) / d;
   EXPECT_NEAR(out.goal->x, 4.8 + 0.2 * k, 1e-9);
   EXPECT_NEAR(out.goal->y, 6.0 * k, 1e-9);
-  // 2 m from it, the visitor standing: no call before 6 s, then one
+  // 2.8 m from it, the visitor standing: no call before 6 s, then one
   int calls = 0;
   double first_call = -1.0;
   for (int i = 0; i < 70; ++i) {
     t += 0.1;
-    if (g.update({t, Pose2D(5.0, 4.0, 0), at(5.0, 6.0, t)}).call_visitor) {
+    if (g.update({t, Pose2D(5.0, 3.2, 0), at(5.0, 6.0, t)}).call_visitor) {
       ++calls;
       if (first_call < 0) first_call = t;
     }
@@ -132,16 +136,16 @@ TEST(Guide, FollowsAWanderingVisitorCallsItAndReplans) {
   EXPECT_EQ(calls, 1);
   EXPECT_NEAR(first_call - (t - 7.0), 6.0, 0.11);
   EXPECT_EQ(g.job(), Job::kFollowVisitor);  // called, not yet back
-  // it comes back to 1.5 m (< ready_distance 1.6): re-plan the tour from
+  // it comes back to 2.3 m (< ready_distance 2.4): re-plan the tour from
   // here, one wander handled
   for (int i = 0; i < 11 && g.job() == Job::kFollowVisitor; ++i) {
     t += 0.1;
-    g.update({t, Pose2D(5.0, 4.0, 0), at(5.0, 5.5, t)});
+    g.update({t, Pose2D(5.0, 3.2, 0), at(5.0, 5.5, t)});
   }
   EXPECT_EQ(g.job(), Job::kReplan);
   EXPECT_EQ(g.wanders(), 1u);
   EXPECT_EQ(g.current(), 1u);
-  const auto out2 = g.update({t + 0.1, Pose2D(5.0, 4.0, 0), at(5.0, 5.5, t + 0.1)});
+  const auto out2 = g.update({t + 0.1, Pose2D(5.0, 3.2, 0), at(5.0, 5.5, t + 0.1)});
   ASSERT_TRUE(out2.plan_request.has_value());
   EXPECT_DOUBLE_EQ(out2.plan_request->x, 10.0);
 }

@@ -77,7 +77,7 @@ class Guide {
   std::vector<Point2D> plan_;
   std::size_t index_ = 0;
   bool requested_ = false, waiting_ = false, looked_ = false, called_ = false, wandering_ = false;
-  double look_ = 0.0, still_ = 0.0, last_t_ = 0.0, dt_ = 0.0, called_at_ = 0.0;
+  double look_ = 0.0, still_ = 0.0, last_t_ = 0.0, dt_ = 0.0, called_at_ = 0.0, entered_ = 0.0;
   std::vector<GuideEvent> events_;
 };
 

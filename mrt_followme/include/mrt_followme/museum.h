@@ -27,16 +27,17 @@ struct Door {
 struct GuideOptions {
   double arrive_tolerance = 0.3;
   double lookahead = 0.7;
-  double keep_max = 2.6;
-  double keep_resume = 1.9;
+  double keep_max = 2.8;
+  double keep_resume = 2.2;
   double lost_time = 4.0;
   double look_radius = 1.0;
   double look_time = 2.0;
-  double ready_distance = 1.6;
-  double wander_distance = 2.5;
-  double follow_distance = 2.0;
+  double ready_distance = 2.4;
+  double wander_distance = 3.0;
+  double follow_distance = 2.8;
   double still_speed = 0.15;
   double call_after = 6.0;
+  double max_wait = 40.0;      // s at an exhibit with the visitor by the robot: go on
   double robot_radius = 0.25;
   double safety_distance = 0.15;
   double resolution = 0.05;
@@ -45,7 +46,8 @@ struct GuideOptions {
 struct VisitorOptions {
   std::string name = "guest";   // the mover of the world it steers
   std::string color = "purple"; // what the robot's camera reports
-  double comfortable = 1.1;
+  double comfortable = 1.4;
+  double return_distance = 2.0; // m from the robot where it stops when it comes back
   double walk_speed = 0.7;
   double look_time = 6.0;
   int wander_after = 0;         // wanders off after this exhibit of the tour (1-based; 0 never)

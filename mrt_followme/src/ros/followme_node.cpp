@@ -5,6 +5,7 @@
 // markers on the exhibits) and the tour's progress.
 #include <interactive_markers/interactive_marker_server.h>
 #include <interactive_markers/menu_handler.h>
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
@@ -132,6 +133,8 @@ int run(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
       ROS_WARN("close_door: %s", e.what());
     }
   });
+  auto truth = nh.advertise<nav_msgs::Odometry>(robot + "/ground_truth", 10);
+  auto estimate = nh.advertise<nav_msgs::Odometry>(robot + "/pose", 10);
   tf2_ros::TransformBroadcaster tf;
   TourMarkers tour(session, opt.frame);
   museum.publish(glue::museum_markers(session, opt.frame));
@@ -150,6 +153,15 @@ int run(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
     const auto k = session.tick();
     tf.sendTransform(mrt::ros_common::to_transform(k.truth, opt.frame, robot + "/base_link_truth", now));
     tf.sendTransform(mrt::ros_common::to_transform(k.estimate, opt.frame, robot + "/base_link", now));
+    nav_msgs::Odometry od;
+    od.header.frame_id = opt.frame;
+    od.header.stamp = now;
+    od.child_frame_id = robot + "/base_link_truth";
+    od.pose.pose = mrt::ros_common::to_pose(k.truth);
+    truth.publish(od);
+    od.child_frame_id = robot + "/base_link";
+    od.pose.pose = mrt::ros_common::to_pose(k.estimate);
+    estimate.publish(od);
     auto markers = glue::dynamic_markers(session, opt.frame);
     for (auto& m : markers.markers) m.header.stamp = now;
     dynamic.publish(markers);
