@@ -21,6 +21,7 @@
 #include "mrt_common_ros/params.h"
 #include "mrt_followme/SetTour.h"
 #include "mrt_followme/followme_loop.h"
+#include "mrt_sim/world.h"
 
 namespace {
 
