@@ -111,88 +111,110 @@ class TourMarkers {
   std::vector<std::string> chosen_;
 };
 
+/// What the node publishes every cycle: clock, poses, markers, status, plans.
+class Outputs {
+ public:
+  Outputs(ros::NodeHandle& nh, const std::string& robot, const std::string& frame) : robot_(robot), frame_(frame) {
+    clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    museum_ = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
+    dynamic_ = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
+    plan_ = nh.advertise<nav_msgs::Path>(robot + "/plan", 1, true);
+    status_ = nh.advertise<std_msgs::String>(robot + "/tour_status", 5, true);
+    summary_ = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
+    truth_ = nh.advertise<nav_msgs::Odometry>(robot + "/ground_truth", 10);
+    estimate_ = nh.advertise<nav_msgs::Odometry>(robot + "/pose", 10);
+  }
+
+  void museum(const FollowMeSession& s) { museum_.publish(glue::museum_markers(s, frame_)); }
+
+  void cycle(const FollowMeSession& s) {
+    ros::Time now;
+    now.fromSec(s.time());
+    rosgraph_msgs::Clock c;
+    c.clock = now;
+    clock_.publish(c);
+    const auto k = s.tick();
+    pose(truth_, k.truth, "/base_link_truth", now);
+    pose(estimate_, k.estimate, "/base_link", now);
+    auto markers = glue::dynamic_markers(s, frame_);
+    for (auto& m : markers.markers) m.header.stamp = now;
+    dynamic_.publish(markers);
+    std_msgs::String st;
+    st.data = glue::tour_status(s);
+    status_.publish(st);
+    if (s.result().plans.size() != plans_) {
+      plans_ = s.result().plans.size();
+      nav_msgs::Path p;
+      p.header.frame_id = frame_;
+      p.header.stamp = now;
+      for (const auto& q : s.result().plans.back()) {
+        geometry_msgs::PoseStamped ps;
+        ps.header = p.header;
+        ps.pose = mrt::ros_common::to_pose(mrt::common::Pose2D(q.x, q.y, 0.0));
+        p.poses.push_back(ps);
+      }
+      plan_.publish(p);
+    }
+  }
+
+  void summary(const FollowMeSession& s) {
+    std_msgs::String m;
+    m.data = glue::summary(s.result());
+    summary_.publish(m);
+    ROS_INFO("tour %s:\n%s", s.result().completed ? "completed" : "ended", m.data.c_str());
+  }
+
+ private:
+  void pose(ros::Publisher& pub, const mrt::common::Pose2D& p, const std::string& child, const ros::Time& now) {
+    tf_.sendTransform(mrt::ros_common::to_transform(p, frame_, robot_ + child, now));
+    nav_msgs::Odometry od;
+    od.header.frame_id = frame_;
+    od.header.stamp = now;
+    od.child_frame_id = robot_ + child;
+    od.pose.pose = mrt::ros_common::to_pose(p);
+    pub.publish(od);
+  }
+
+  std::string robot_, frame_;
+  ros::Publisher clock_, museum_, dynamic_, plan_, status_, summary_, truth_, estimate_;
+  tf2_ros::TransformBroadcaster tf_;
+  std::size_t plans_ = 0;
+};
+
 int run(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
   const NodeOptions opt = read_options(pnh);
   FollowMeSession session(opt.loop);
-  const std::string robot = opt.loop.robot;
-  auto clock = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  auto museum = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
-  auto dynamic = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
-  auto plan = nh.advertise<nav_msgs::Path>(robot + "/plan", 1, true);
-  auto status = nh.advertise<std_msgs::String>(robot + "/tour_status", 5, true);
-  auto summary = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
+  Outputs out(nh, opt.loop.robot, opt.frame);
   auto set_tour = pnh.advertiseService<mrt_followme::SetTour::Request, mrt_followme::SetTour::Response>(
       "set_tour", [&](auto& req, auto& res) {
         res.message = session.set_tour(req.exhibits);
         res.accepted = res.message.empty();
         return true;
       });
-  auto close = nh.subscribe<std_msgs::String>(robot + "/close_door", 5, [&](const std_msgs::String::ConstPtr& m) {
-    try {
-      session.close_door(m->data);
-    } catch (const std::exception& e) {
-      ROS_WARN("close_door: %s", e.what());
-    }
-  });
-  auto truth = nh.advertise<nav_msgs::Odometry>(robot + "/ground_truth", 10);
-  auto estimate = nh.advertise<nav_msgs::Odometry>(robot + "/pose", 10);
-  tf2_ros::TransformBroadcaster tf;
+  auto close = nh.subscribe<std_msgs::String>(opt.loop.robot + "/close_door", 5,
+                                              [&](const std_msgs::String::ConstPtr& m) {
+                                                try {
+                                                  session.close_door(m->data);
+                                                } catch (const std::exception& e) {
+                                                  ROS_WARN("close_door: %s", e.what());
+                                                }
+                                              });
   TourMarkers tour(session, opt.frame);
-  museum.publish(glue::museum_markers(session, opt.frame));
-
-  const ros::WallTime start = ros::WallTime::now();
-  std::size_t plan_count = 0;
+  out.museum(session);
+  ros::WallTime start = ros::WallTime::now();
   bool done = false;
   while (ros::ok()) {
     ros::spinOnce();
-    const bool more = !done && session.cycle();
-    ros::Time now;
-    now.fromSec(session.time());
-    rosgraph_msgs::Clock c;
-    c.clock = now;
-    clock.publish(c);
-    const auto k = session.tick();
-    tf.sendTransform(mrt::ros_common::to_transform(k.truth, opt.frame, robot + "/base_link_truth", now));
-    tf.sendTransform(mrt::ros_common::to_transform(k.estimate, opt.frame, robot + "/base_link", now));
-    nav_msgs::Odometry od;
-    od.header.frame_id = opt.frame;
-    od.header.stamp = now;
-    od.child_frame_id = robot + "/base_link_truth";
-    od.pose.pose = mrt::ros_common::to_pose(k.truth);
-    truth.publish(od);
-    od.child_frame_id = robot + "/base_link";
-    od.pose.pose = mrt::ros_common::to_pose(k.estimate);
-    estimate.publish(od);
-    auto markers = glue::dynamic_markers(session, opt.frame);
-    for (auto& m : markers.markers) m.header.stamp = now;
-    dynamic.publish(markers);
-    std_msgs::String st;
-    st.data = glue::tour_status(session);
-    status.publish(st);
-    if (session.result().plans.size() != plan_count) {
-      plan_count = session.result().plans.size();
-      nav_msgs::Path p;
-      p.header.frame_id = opt.frame;
-      p.header.stamp = now;
-      for (const auto& q : session.result().plans.back()) {
-        geometry_msgs::PoseStamped ps;
-        ps.header = p.header;
-        ps.pose = mrt::ros_common::to_pose(mrt::common::Pose2D(q.x, q.y, 0.0));
-        p.poses.push_back(ps);
-      }
-      plan.publish(p);
-    }
-    if (!more && !done) {
-      done = true;
-      std_msgs::String s;
-      s.data = glue::summary(session.result());
-      summary.publish(s);
-      ROS_INFO("tour %s:\n%s", session.result().completed ? "completed" : "ended", s.data.c_str());
-    }
-    // Pace: simulated time runs real_time_factor times the wall clock.
-    const double due = session.time() / opt.real_time_factor;
-    const double ahead = due - (ros::WallTime::now() - start).toSec();
+    const bool more = session.cycle();  // false at once when the tour is over
+    out.cycle(session);
+    if (!more && !done) out.summary(session);
+    done = !more;  // a new tour through the dialogue starts it again
+    // Pace: simulated time runs real_time_factor times the wall clock; more
+    // than 0.2 s behind (a slow machine, a pause after the tour), pacing
+    // restarts from now rather than racing to catch up.
+    const double ahead = session.time() / opt.real_time_factor - (ros::WallTime::now() - start).toSec();
     if (ahead > 0) ros::WallDuration(ahead).sleep();
+    if (ahead < -0.2) start = ros::WallTime::now() - ros::WallDuration(session.time() / opt.real_time_factor);
     if (done) ros::WallDuration(0.1).sleep();
   }
   return 0;
