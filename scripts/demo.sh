@@ -7,7 +7,8 @@
 #   ./scripts/demo.sh [--gui] [NAME]    NAME: a launch file in launch/ (default: roby;
 #                                       "demo" is the figure eight on the MSL field)
 #   DURATION=<s>  simulated seconds to record at most (default: 200 for roby,
-#                 which stops as soon as the route is completed; 30 otherwise)
+#                 which stops as soon as the route is completed; 400 for
+#                 followme, which stops when the tour is over; 30 otherwise)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 GUI=0
@@ -23,6 +24,7 @@ LAUNCH="$ROOT/launch/$NAME.launch"
 [ -f "$LAUNCH" ] || { echo "demo: no launch file $LAUNCH" >&2; exit 2; }
 case "$NAME" in
   roby) DURATION="${DURATION:-200}" ;;
+  followme) DURATION="${DURATION:-400}" ;;
   *) DURATION="${DURATION:-30}" ;;
 esac
 
@@ -82,6 +84,11 @@ if [ "$NAME" = roby ]; then
   rostopic echo -n 1 --filter "m.event == 'route_completed'" /robot1/task_status >/dev/null 2>&1 &
   waiters+=($!)
 fi
+if [ "$NAME" = followme ]; then
+  # FollowMe stops recording once the tour's summary is out.
+  rostopic echo -n 1 /robot1/tour_summary >"$OUT/tour_summary.txt" 2>/dev/null &
+  waiters+=($!)
+fi
 wait -n "${waiters[@]}" || true
 if kill -0 "$bag" 2>/dev/null; then
   sleep 2  # the last moments of the route
@@ -103,6 +110,13 @@ fi
 [ -s "$OUT/demo.bag" ] || { echo "demo: no bag was recorded; see $OUT/rosbag.log" >&2; exit 1; }
 
 /usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall"
+if [ "$NAME" = followme ]; then
+  echo "FollowMe tour:"
+  # the summary: exhibits visited, wanders handled, time, longest time the
+  # visitor was out of sight, localization error from ground truth
+  /usr/bin/python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]).read().split("---")[0])["data"])' \
+    "$OUT/tour_summary.txt" | sed 's/^/  /' || echo "  (no summary: see $OUT/roslaunch.log)"
+fi
 
 # The plots of the run, over the launch file's world (its `world` argument).
 world=$(sed -n 's|.*<arg name="world" default="\$(dirname)/\.\./\([^"]*\)".*|\1|p' "$LAUNCH" | head -n 1)

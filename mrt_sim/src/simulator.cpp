@@ -174,6 +174,27 @@ void Simulator::step() {
   for (std::size_t i = 0; i < robots_.size(); ++i) update_sensors(i);
 }
 
+std::size_t Simulator::mover_index(const std::string& name) const {
+  for (std::size_t i = 0; i < world_.movers.size(); ++i)
+    if (world_.movers[i].name == name) return i;
+  throw std::out_of_range("no mover named '" + name + "'");
+}
+
+void Simulator::steer_mover(std::size_t index, const Point2D& target, double speed) {
+  Mover& m = world_.movers.at(index);
+  m.waypoints = {m.position, target};
+  m.next = 1;
+  m.loop = false;
+  m.speed = std::max(0.0, speed);
+  m.done = speed <= 0.0;
+  if (m.done) m.velocity = {0.0, 0.0};
+}
+
+void Simulator::add_wall(const Segment& wall) {
+  world_.walls.push_back(wall);
+  solid_ = solid_segments(world_);
+}
+
 void Simulator::move_movers() {
   for (Mover& m : world_.movers) {
     const Point2D start = m.position;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -195,6 +196,40 @@ TEST(Simulator, PersonWaitsForRobot) {
   run(sim, 3.0);
   EXPECT_NEAR(sim.world().movers[0].position.x, 1.5, 0.001);
   EXPECT_LE(sim.world().movers[0].position.x, 1.5);
+}
+
+TEST(Simulator, SteeredMoverWalksStraightAndStops) {
+  // A scripted walker taken over (FollowMe's visitor): from (0, 0) straight
+  // to (0, 2) at 0.5 m/s: 0.5 m after 1 s, there and standing after 4 s
+  // (2 m / 0.5 m/s); speed 0 stands at once. Unknown names throw.
+  Simulator sim = make("movers:\n  - {name: guest, speed: 1, waypoints: [[0, 0], [3, 0]]}\n",
+                       "  - {name: r, base: ianus3, pose: [-4, -4, 0]}\n");
+  const std::size_t g = sim.mover_index("guest");
+  EXPECT_THROW(sim.mover_index("nobody"), std::out_of_range);
+  EXPECT_THROW(sim.steer_mover(7, {0, 0}, 1.0), std::out_of_range);
+  sim.steer_mover(g, {0.0, 2.0}, 0.5);
+  run(sim, 1.0);
+  EXPECT_NEAR(sim.world().movers[g].position.x, 0.0, 1e-12);
+  EXPECT_NEAR(sim.world().movers[g].position.y, 0.5, 1e-9);
+  run(sim, 4.0);
+  EXPECT_NEAR(sim.world().movers[g].position.y, 2.0, 1e-12);
+  EXPECT_TRUE(sim.world().movers[g].done);
+  sim.steer_mover(g, {3.0, 2.0}, 0.0);
+  run(sim, 1.0);
+  EXPECT_NEAR(sim.world().movers[g].position.x, 0.0, 1e-12);
+}
+
+TEST(Simulator, AddedWallBlocksTheRobot) {
+  // A door closing in front of a robot driving +x at 0.5 m/s from the
+  // origin: a wall at x = 1 stops its 0.25 m body at x = 0.75 (within one
+  // 1 ms step of 0.5 mm).
+  Simulator sim = make("", kOneRobot);
+  sim.add_wall({{1.0, -5.0}, {1.0, 5.0}});
+  sim.set_twist(0, {0.5, 0.0, 0.0});
+  run(sim, 3.0);
+  EXPECT_NEAR(sim.robots()[0].pose.x, 0.75, 0.001);
+  EXPECT_LE(sim.robots()[0].pose.x, 0.75);
+  EXPECT_TRUE(sim.robots()[0].bumped);
 }
 
 TEST(Simulator, BallRollsToAStop) {

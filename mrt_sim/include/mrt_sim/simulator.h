@@ -64,6 +64,17 @@ class Simulator {
   /// Convenience: converts a body twist to wheel set-points.
   void set_twist(std::size_t robot, const Twist2D& t);
 
+  /// Index of the mover named `name`; throws std::out_of_range if none.
+  std::size_t mover_index(const std::string& name) const;
+  /// Steers mover `index` (a visitor driven by a behaviour model instead of
+  /// its script): from where it stands it walks straight to `target` at
+  /// `speed` (m/s; <= 0 stands still) and stops there, still waiting rather
+  /// than step into a robot. Throws std::out_of_range for a bad index.
+  void steer_mover(std::size_t index, const Point2D& target, double speed);
+  /// Adds a wall (e.g. a door being closed): it blocks motion, sonar and
+  /// vision from the next step on.
+  void add_wall(const Segment& wall);
+
   /// Advances the world by one step: moves robots along exact constant-twist
   /// arcs (wheel speeds saturated preserving direction), stops a robot whose
   /// step would collide (its footprint would overlap a wall, goal wall, post,

@@ -1,0 +1,94 @@
+// What the FollowMe rostests read from followme_node: the tour's status
+// lines, the plans and the summary (parsed back into numbers).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+struct Summary {
+  bool received = false;
+  std::string text;
+  int visited = -1;
+  std::string names;
+  int wanders = -1;
+  bool completed = false;
+  double time = -1, unseen = -1, pose_error = -1, person_gap = -1;
+};
+
+class FollowMeObserver {
+ public:
+  explicit FollowMeObserver(ros::NodeHandle& nh) {
+    status_ = nh.subscribe<std_msgs::String>("/robot1/tour_status", 100, [this](const std_msgs::String::ConstPtr& m) {
+      // "t 12 s | Job | next X | ..." without the time
+      const auto bar = m->data.find(" | ");
+      const std::string s = bar == std::string::npos ? m->data : m->data.substr(bar + 3);
+      if (statuses.empty() || statuses.back() != s) statuses.push_back(s);
+    });
+    summary_ = nh.subscribe<std_msgs::String>("/robot1/tour_summary", 1, [this](const std_msgs::String::ConstPtr& m) {
+      parse(m->data);
+    });
+    plan_ = nh.subscribe<nav_msgs::Path>("/robot1/plan", 20, [this](const nav_msgs::Path::ConstPtr& m) {
+      plans.push_back(*m);
+    });
+  }
+
+  bool wait(double seconds) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::ok() && !summary.received && ros::WallTime::now() < end) {
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+    return summary.received;
+  }
+
+  bool saw(const std::string& prefix) const {
+    for (const auto& s : statuses)
+      if (s.compare(0, prefix.size(), prefix) == 0) return true;
+    return false;
+  }
+
+  Summary summary;
+  std::vector<std::string> statuses;
+  std::vector<nav_msgs::Path> plans;
+
+ private:
+  void parse(const std::string& t) {
+    summary.received = true;
+    summary.text = t;
+    char names[256] = {0}, done[8] = {0};
+    const char* p = t.c_str();
+    std::sscanf(p, "exhibits visited: %d (%255[^)])", &summary.visited, names);
+    summary.names = names;
+    auto field = [&](const char* key, const char* fmt, void* out) {
+      const auto at = t.find(key);
+      if (at != std::string::npos) std::sscanf(t.c_str() + at + std::string(key).size(), fmt, out);
+    };
+    field("wanders handled: ", "%d", &summary.wanders);
+    field("completed: ", "%7s", done);
+    summary.completed = std::string(done) == "yes";
+    field("time: ", "%lf", &summary.time);
+    field("out of sight: ", "%lf", &summary.unseen);
+    field("ground truth): ", "%lf", &summary.pose_error);
+    field("closest to a person: ", "%lf", &summary.person_gap);
+  }
+
+  ros::Subscriber status_, summary_, plan_;
+};
+
+/// Does the path cross the vertical line x = x_line between y0 and y1?
+inline bool crosses(const nav_msgs::Path& path, double x_line, double y0, double y1) {
+  for (std::size_t i = 1; i < path.poses.size(); ++i) {
+    const auto& a = path.poses[i - 1].pose.position;
+    const auto& b = path.poses[i].pose.position;
+    if ((a.x - x_line) * (b.x - x_line) > 0 || a.x == b.x) continue;
+    const double y = a.y + (b.y - a.y) * (x_line - a.x) / (b.x - a.x);
+    if (y >= y0 && y <= y1) return true;
+  }
+  return false;
+}
