@@ -16,10 +16,11 @@ CountAligner::CountAligner(AlignerOptions o) : o_(o) { o_.validate(); }
 bool CountAligner::add(int mouse, double t, std::int64_t dx, std::int64_t dy) {
   if ((mouse != 0 && mouse != 1) || !std::isfinite(t)) return false;
   ++stats_.reports;
-  if (t < last_t_[mouse]) {
+  if (t < last_raw_[mouse]) {  // against the mouse's previous stamp as given
     ++stats_.out_of_order;
     return false;
   }
+  last_raw_[mouse] = t;
   double* cum = cum_[mouse];
   cum[0] += static_cast<double>(dx);
   cum[1] += static_cast<double>(dy);
@@ -30,6 +31,7 @@ bool CountAligner::add(int mouse, double t, std::int64_t dx, std::int64_t dy) {
     ++stats_.late;
     t = instant_ + 1e-9;
   }
+  t = std::max(t, last_t_[mouse]);  // deferred reports keep their order
   const double span = std::min(o_.frame, t - last_t_[mouse]);
   r_[mouse].push_back({t, cum[0], cum[1], std::max(span, 0.0)});
   last_t_[mouse] = t;
@@ -85,7 +87,7 @@ void CountAligner::reset() {
     r_[m].clear();
     base_[m][0] = base_[m][1] = cum_[m][0] = cum_[m][1] = 0.0;
     out_[m][0] = out_[m][1] = 0;
-    last_t_[m] = -1e300;
+    last_t_[m] = last_raw_[m] = -1e300;
   }
 }
 

@@ -125,10 +125,11 @@ TEST(CountAligner, DisorderedStampsAreCountedAndNoCountIsLost) {
   EXPECT_EQ(c.left_dx, 15);
   EXPECT_EQ(c.right_dy, 20);
   EXPECT_TRUE(al.add(1, 1.050, 0, 4));    // late (before 1.090): deferred to the next sample
+  EXPECT_TRUE(al.add(1, 1.050, 0, 2));    // late again, same stamp: deferred too, not dropped
   c = al.take(1.120);
-  EXPECT_EQ(c.right_dy, 4);
+  EXPECT_EQ(c.right_dy, 6);
   EXPECT_EQ(al.stats().out_of_order, 1u);
-  EXPECT_EQ(al.stats().late, 1u);
+  EXPECT_EQ(al.stats().late, 2u);
   // A gap of 5 s: no interpolation across it beyond one frame.
   EXPECT_TRUE(al.add(0, 6.000, 8, 0));
   c = al.take(5.996 + 0.010);             // instant 5.996: half of the 8 ms frame before 6.000

@@ -61,7 +61,8 @@ class CountAligner {
   double base_[2][2] = {{0, 0}, {0, 0}};  // cumulative counts before the first kept report
   double cum_[2][2] = {{0, 0}, {0, 0}};   // cumulative counts after the last report
   std::int64_t out_[2][2] = {{0, 0}, {0, 0}};  // cumulative counts already handed out
-  double last_t_[2] = {-1e300, -1e300};
+  double last_t_[2] = {-1e300, -1e300};    // of the last report, as used (deferred ones moved)
+  double last_raw_[2] = {-1e300, -1e300};  // of the last report, as stamped
   double instant_ = -1e300;  // the last common instant
   AlignerStats stats_;
 };
