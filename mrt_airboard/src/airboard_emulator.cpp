@@ -28,6 +28,7 @@ void usage() {
       "  --cut-rx-after S      lose every PC->board byte after S s of board time\n"
       "  --seed N              seed of the fault generator (default 1)\n"
       "  --baud N              carry bytes at the rate of an N-baud 8N1 line (default 0: instantly)\n"
+      "  --require-checked     refuse plain SET_SPEED / SET_PWM from power-up (CRC-32 checked ones only)\n"
       "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
       "prints its statistics on stderr. Arguments name:=value (ROS) are ignored.\n";
 }
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
       else if (a == "--corrupt-tx-rate") faults.corrupt_tx = std::stod(val());
       else if (a == "--cut-rx-after") faults.cut_rx_after = std::stod(val());
       else if (a == "--baud") faults.baud = std::stoi(val());
+      else if (a == "--require-checked") fw.require_checked = true;
       else if (a == "--seed") faults.seed = static_cast<uint32_t>(std::stoul(val()));
       else if (a == "-h" || a == "--help") { usage(); return 0; }
       else throw std::invalid_argument("unknown option " + a);

@@ -102,7 +102,8 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
       .get("state_format", format)
       .get("compact_period_ms", s.compact_period_ms)
       .get("reconnect_min", s.reconnect_min)
-      .get("reconnect_max", s.reconnect_max);
+      .get("reconnect_max", s.reconnect_max)
+      .get("checked_commands", s.checked_commands);
   ParamReader::check(!o.port.empty(), "port", "a non-empty device path");
   s.state_format = SessionOptions::parse_state_format(format);
   s.set_gains = pnh.hasParam("gains/kp") || pnh.hasParam("gains/ki");

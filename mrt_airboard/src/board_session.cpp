@@ -289,7 +289,7 @@ void BoardSession::send_pwm() {
   } else {
     limiter_.reset();
   }
-  send(make_set_pwm(seq_++, d));
+  send(make_set_pwm(seq_++, d, o_.checked_commands));
   ++stats_.commands_sent;
 }
 
@@ -308,7 +308,7 @@ void BoardSession::send_speed(bool fresh, double dt) {
     }
     w = r.wheels;
   }
-  send(make_set_speed(seq_++, w));
+  send(make_set_speed(seq_++, w, o_.checked_commands));
   ++stats_.commands_sent;
 }
 

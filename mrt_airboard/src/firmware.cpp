@@ -45,6 +45,27 @@ void Firmware::command_received(uint8_t seq) {
   ++applied_;
 }
 
+// Strict mode: once a checked set command was applied (or from power-up with
+// FirmwareConfig::require_checked), plain ones are refused, so damage that
+// turns a checked frame into a plain one (it must also pass the CRC-16) is
+// not applied either.
+bool Firmware::accept_check(bool checked) {
+  if (checked) {
+    strict_ = true;
+    return true;
+  }
+  return !strict_ && !c_.require_checked;
+}
+
+template <class Nack>
+void Firmware::refuse_set(const Frame& f, const Nack& nack) {
+  if (set_check_failed(f)) {
+    ++check_failures_;
+    return nack(proto::kNackBadCheck);
+  }
+  return nack(proto::kNackBadLength);
+}
+
 void Firmware::handle(const Frame& f) {
   auto nack = [&](uint8_t reason) {
     ++rejected_;
@@ -53,8 +74,10 @@ void Firmware::handle(const Frame& f) {
   switch (f.type) {
     case proto::kSetSpeed: {
       std::vector<double> sp;
-      if (!parse_set_speed(f, &sp)) return nack(proto::kNackBadLength);
+      bool checked = false;
+      if (!parse_set_speed(f, &sp, &checked)) return refuse_set(f, nack);
       if (static_cast<int>(sp.size()) != c_.motors) return nack(proto::kNackBadMotorCount);
+      if (!accept_check(checked)) return nack(proto::kNackUnchecked);
       for (std::size_t i = 0; i < sp.size(); ++i) {
         Motor& m = m_[i];
         m.clamped = std::fabs(sp[i]) > c_.max_speed;
@@ -68,8 +91,10 @@ void Firmware::handle(const Frame& f) {
     }
     case proto::kSetPwm: {
       std::vector<double> d;
-      if (!parse_set_pwm(f, &d)) return nack(proto::kNackBadLength);
+      bool checked = false;
+      if (!parse_set_pwm(f, &d, &checked)) return refuse_set(f, nack);
       if (static_cast<int>(d.size()) != c_.motors) return nack(proto::kNackBadMotorCount);
+      if (!accept_check(checked)) return nack(proto::kNackUnchecked);
       for (std::size_t i = 0; i < d.size(); ++i) {
         m_[i].clamped = std::fabs(d[i]) > 1.0;
         m_[i].duty_cmd = std::clamp(d[i], -1.0, 1.0);

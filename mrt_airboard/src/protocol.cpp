@@ -175,22 +175,64 @@ int32_t to_mrad(double v) { return round_sat<int32_t>(v * 1000.0); }
 int16_t to_duty(double v) { return round_sat<int16_t>(v * 10000.0); }
 int32_t to_q16(double v) { return round_sat<int32_t>(v * 65536.0); }
 
-Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds) {
+uint32_t command_check(const Frame& f, std::size_t n) {
+  boost::crc_32_type c;
+  const uint8_t head[2] = {f.type, f.seq};
+  c.process_bytes(head, 2);
+  c.process_bytes(f.payload.data(), std::min(n, f.payload.size()));
+  return c.checksum();
+}
+
+namespace {
+void append_check(Frame& f) {
+  const uint32_t c = command_check(f, f.payload.size());
+  for (int i = 0; i < 4; ++i) f.payload.push_back(static_cast<uint8_t>(c >> (8 * i)));
+}
+
+// The set command's body length for its motor count n and element size;
+// 0 when the length is neither the plain nor the checked one.
+std::size_t set_body(const Frame& f, std::size_t elem, bool* checked) {
+  if (f.payload.empty()) return 0;
+  const std::size_t n = f.payload[0];
+  if (n == 0 || n > proto::kMaxMotors) return 0;
+  const std::size_t body = 1 + elem * n;
+  *checked = f.payload.size() == body + proto::kCheckSize;
+  return (f.payload.size() == body || *checked) ? body : 0;
+}
+
+bool check_ok(const Frame& f, std::size_t body) {
+  const uint8_t* p = f.payload.data() + body;
+  const uint32_t c = p[0] | (p[1] << 8) | (p[2] << 16) | (static_cast<uint32_t>(p[3]) << 24);
+  return c == command_check(f, body);
+}
+}  // namespace
+
+Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds, bool checked) {
   check_motors(speeds.size());
   Frame f = frame(proto::kSetSpeed, seq);
   Writer w{f.payload};
   w.u8(static_cast<uint8_t>(speeds.size()));
   for (double s : speeds) w.i32(to_mrad(s));
+  if (checked) append_check(f);
   return f;
 }
 
-Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties) {
+Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties, bool checked) {
   check_motors(duties.size());
   Frame f = frame(proto::kSetPwm, seq);
   Writer w{f.payload};
   w.u8(static_cast<uint8_t>(duties.size()));
   for (double d : duties) w.i16(to_duty(d));
+  if (checked) append_check(f);
   return f;
+}
+
+bool set_check_failed(const Frame& f) {
+  bool checked = false;
+  std::size_t body = 0;
+  if (f.type == proto::kSetSpeed) body = set_body(f, 4, &checked);
+  else if (f.type == proto::kSetPwm) body = set_body(f, 2, &checked);
+  return body > 0 && checked && !check_ok(f, body);
 }
 
 Frame make_set_gains(uint8_t seq, const Gains& g) {
@@ -280,20 +322,26 @@ Frame make_nack(uint8_t seq, uint8_t type, uint8_t reason) {
   return f;
 }
 
-bool parse_set_speed(const Frame& f, std::vector<double>* speeds) {
-  if (f.type != proto::kSetSpeed || f.payload.empty()) return false;
+bool parse_set_speed(const Frame& f, std::vector<double>* speeds, bool* checked) {
+  bool chk = false;
+  if (f.type != proto::kSetSpeed) return false;
+  const std::size_t body = set_body(f, 4, &chk);
+  if (body == 0 || (chk && !check_ok(f, body))) return false;
+  if (checked) *checked = chk;
   const std::size_t n = f.payload[0];
-  if (n == 0 || n > proto::kMaxMotors || f.payload.size() != 1 + 4 * n) return false;
   Reader r{f.payload, 1};
   speeds->resize(n);
   for (std::size_t i = 0; i < n; ++i) (*speeds)[i] = r.i32() / 1000.0;
   return true;
 }
 
-bool parse_set_pwm(const Frame& f, std::vector<double>* duties) {
-  if (f.type != proto::kSetPwm || f.payload.empty()) return false;
+bool parse_set_pwm(const Frame& f, std::vector<double>* duties, bool* checked) {
+  bool chk = false;
+  if (f.type != proto::kSetPwm) return false;
+  const std::size_t body = set_body(f, 2, &chk);
+  if (body == 0 || (chk && !check_ok(f, body))) return false;
+  if (checked) *checked = chk;
   const std::size_t n = f.payload[0];
-  if (n == 0 || n > proto::kMaxMotors || f.payload.size() != 1 + 2 * n) return false;
   Reader r{f.payload, 1};
   duties->resize(n);
   for (std::size_t i = 0; i < n; ++i) (*duties)[i] = r.i16() / 10000.0;

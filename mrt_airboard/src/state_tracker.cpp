@@ -4,10 +4,22 @@
 
 namespace mrt::airboard {
 
+void StateTracker::remember(double host_time) {
+  const double o = host_time - board_time_;
+  if (window_ <= 0.0) return;
+  while (!recent_.empty() && recent_.back().second >= o) recent_.pop_back();
+  recent_.emplace_back(host_time, o);
+  while (recent_.front().first < host_time - window_) recent_.pop_front();
+}
+
 bool StateTracker::advance(uint32_t dms, double host_time) {
   const double dt = dms * 1e-3;
   board_time_ += dt;
   offset_ = std::min(offset_ + drift_ * dt, host_time - board_time_);
+  remember(host_time);
+  // The window's minimum includes this frame, so the offset stays at most
+  // host_time - board_time_: a stamp is never later than its reception.
+  if (!recent_.empty()) offset_ = std::max(offset_, recent_.front().second);
   return true;
 }
 
@@ -23,6 +35,8 @@ bool StateTracker::update(const BoardState& s, double host_time) {
     last_ms_ = s.time_ms;
     board_time_ = s.time_ms * 1e-3;
     offset_ = host_time - board_time_;
+    recent_.clear();
+    remember(host_time);
     have_ = true;
     full_ = true;
     rebased_ = true;
@@ -60,6 +74,8 @@ bool StateTracker::update_short(const ShortState& s, double host_time, uint32_t 
     last_ms_ = s.time_ms;
     board_time_ = s.time_ms * 1e-3;
     offset_ = host_time - board_time_;
+    recent_.clear();
+    remember(host_time);
     have_ = true;
     full_ = false;
     rebased_ = true;

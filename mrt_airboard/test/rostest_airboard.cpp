@@ -338,6 +338,24 @@ TEST_F(Airboard, ReconnectsWhenThePortComesBack) {
     stopped = stopped || zero;
   }
   EXPECT_TRUE(stopped) << "no stopped wheel_state after the link was lost";
+  // How fast: the node's stopped wheel_state (stamped with its clock when it
+  // saw the hang-up) within 100 ms of the last frame of the board (stamped
+  // with the board clock mapped to the node's, never later than its
+  // reception): the hang-up is seen at the next 2 ms read, not after
+  // ~link_timeout (0.5 s).
+  double last_moving = -1.0, first_stopped = -1.0;
+  for (const auto& w : wheels_) {
+    bool zero = !w.speed.empty();
+    for (double v : w.speed) zero = zero && v == 0.0;
+    if (zero && first_stopped < 0.0) first_stopped = w.header.stamp.toSec();
+    if (!zero && first_stopped < 0.0) last_moving = w.header.stamp.toSec();
+  }
+  if (last_moving > 0.0 && first_stopped > 0.0) {
+    EXPECT_LT(first_stopped - last_moving, 0.1) << "stopped wheels published too late after the unplug";
+    std::printf("reconnect: stopped wheels %.1f ms after the board's last frame\n", 1e3 * (first_stopped - last_moving));
+  } else {
+    ADD_FAILURE() << "no wheel_state of the moving board before the unplug (" << wheels_.size() << " states)";
+  }
   // Diagnostics (1 Hz): the link entry turns ERROR and keeps the counts of
   // the frames received before the loss; the motors are reported stale.
   diag_.link.clear();

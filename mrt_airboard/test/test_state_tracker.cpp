@@ -57,6 +57,40 @@ TEST(StateTracker, FollowsAFasterHostClockWithinTheDriftBound) {
   EXPECT_NEAR(t.host_stamp(), 10.005, 1e-4);
 }
 
+// mrt_sim's /clock against the emulator's wall clock: the simulator stalls
+// (its clock stops while the board runs on), then races to catch up (it does
+// so for stalls under 0.2 s, sim_node.cpp). Frames every 10 ms of board
+// time, 2 ms transport delay; every 2 s the host clock stops for 15 frames
+// (150 ms) and then runs twice as fast for 15 frames. The minimum offset
+// alone keeps the stall's -150 ms for good: 1.2 s after the catch-up the
+// stamps lag the reception by 0.150 - 1000 ppm x 1.35 s = 0.1487 s (the
+// plot_run lag). With the 1 s window they lag by 0.
+TEST(StateTracker, SimulatedClockStallsDoNotLeaveTheStampsBehind) {
+  StateTracker t;  // 1000 ppm, 1 s window
+  double host = 100.002;
+  double last_stamp = 0.0;
+  for (int cycle = 0; cycle < 10; ++cycle) {
+    for (int k = 0; k < 200; ++k) {
+      const uint32_t ms = static_cast<uint32_t>((cycle * 200 + k) * 10);
+      if (cycle + k > 0) host += (k >= 50 && k < 65) ? 0.0 : (k >= 65 && k < 80) ? 0.020 : 0.010;
+      ASSERT_TRUE(t.update(state(ms, {0}), host));
+      EXPECT_LE(t.host_stamp(), host + 1e-12);         // never later than the reception
+      EXPECT_GE(t.host_stamp(), last_stamp - 1e-9);     // never backwards
+      last_stamp = t.host_stamp();
+    }
+    // 1.2 s after the catch-up: the stamp is the reception time again.
+    EXPECT_NEAR(t.host_stamp(), host, 1e-9) << "cycle " << cycle;
+  }
+  // The old behaviour, window off: the 0.1487 s lag.
+  StateTracker old(1000.0, 0.0);
+  host = 100.002;
+  for (int k = 0; k < 200; ++k) {
+    if (k > 0) host += (k >= 50 && k < 65) ? 0.0 : (k >= 65 && k < 80) ? 0.020 : 0.010;
+    old.update(state(static_cast<uint32_t>(k * 10), {0}), host);
+  }
+  EXPECT_NEAR(host - old.host_stamp(), 0.150 - 1e-3 * 1.35, 1e-6);
+}
+
 namespace {
 ShortState short_state(uint32_t ms, std::vector<int32_t> ticks) {
   ShortState s;

@@ -10,7 +10,7 @@
 
 namespace mrt::mice {
 
-void EvdevAccumulator::feed(std::uint16_t type, std::uint16_t code, std::int32_t value) {
+void EvdevAccumulator::feed(std::uint16_t type, std::uint16_t code, std::int32_t value, double t) {
   if (type == EV_SYN && code == SYN_DROPPED) {
     ++dropped_;
     discarding_ = true;
@@ -22,6 +22,15 @@ void EvdevAccumulator::feed(std::uint16_t type, std::uint16_t code, std::int32_t
       dx_ += -pending_y_;
       dy_ += -pending_x_;
       ++reports_;
+      if (pending_x_ != 0 || pending_y_ != 0) {
+        // Bounded: a consumer that never takes the reports merges the oldest.
+        if (stamped_.size() >= kMaxStamped) {
+          stamped_[1].dx += stamped_[0].dx;
+          stamped_[1].dy += stamped_[0].dy;
+          stamped_.pop_front();
+        }
+        stamped_.push_back({t, -pending_y_, -pending_x_});
+      }
     }
     discarding_ = false;
     pending_x_ = pending_y_ = 0;
@@ -37,7 +46,21 @@ void EvdevAccumulator::take(std::int64_t* dx, std::int64_t* dy) {
   *dx = dx_;
   *dy = dy_;
   dx_ = dy_ = 0;
+  stamped_.clear();
 }
+
+std::deque<EvdevAccumulator::Report> EvdevAccumulator::take_reports() {
+  std::deque<Report> out;
+  out.swap(stamped_);
+  dx_ = dy_ = 0;
+  return out;
+}
+
+namespace {
+double stamp(const input_event& ev) {
+  return static_cast<double>(ev.input_event_sec) + 1e-6 * static_cast<double>(ev.input_event_usec);
+}
+}  // namespace
 
 EvdevMouse::~EvdevMouse() { close(); }
 
@@ -86,7 +109,7 @@ bool EvdevMouse::poll_libevdev(EvdevAccumulator& acc) {
   while (true) {
     int rc = libevdev_next_event(dev_, LIBEVDEV_READ_FLAG_NORMAL, &ev);
     if (rc == LIBEVDEV_READ_STATUS_SUCCESS) {
-      acc.feed(ev.type, ev.code, ev.value);
+      acc.feed(ev.type, ev.code, ev.value, stamp(ev));
       continue;
     }
     if (rc == LIBEVDEV_READ_STATUS_SYNC) {
@@ -96,7 +119,7 @@ bool EvdevMouse::poll_libevdev(EvdevAccumulator& acc) {
       acc.feed(EV_SYN, SYN_DROPPED, 0);
       do rc = libevdev_next_event(dev_, LIBEVDEV_READ_FLAG_SYNC, &ev);
       while (rc == LIBEVDEV_READ_STATUS_SYNC);
-      acc.feed(EV_SYN, SYN_REPORT, 0);
+      acc.feed(EV_SYN, SYN_REPORT, 0, stamp(ev));
       continue;
     }
     if (rc == -EAGAIN) return true;
@@ -114,7 +137,7 @@ bool EvdevMouse::poll_raw(EvdevAccumulator& acc) {
     const ssize_t n = ::read(fd_, ev, sizeof ev);
     if (n > 0) {
       const std::size_t k = static_cast<std::size_t>(n) / sizeof(input_event);
-      for (std::size_t i = 0; i < k; ++i) acc.feed(ev[i].type, ev[i].code, ev[i].value);
+      for (std::size_t i = 0; i < k; ++i) acc.feed(ev[i].type, ev[i].code, ev[i].value, stamp(ev[i]));
       continue;
     }
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return true;

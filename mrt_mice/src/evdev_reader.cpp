@@ -18,7 +18,8 @@ EvdevReader::EvdevReader(const EvdevReaderOptions& o, Listener listener)
     : o_((o.validate(), o)),
       listener_(std::move(listener)),
       left_(o_.left_device, o_.grab),
-      right_(o_.right_device, o_.grab) {}
+      right_(o_.right_device, o_.grab),
+      aligner_(o_.align) {}
 
 void EvdevReader::reopen(double now) {
   if (tried_ && now < next_try_) return;
@@ -77,6 +78,24 @@ std::optional<MiceCounts> EvdevReader::take() {
   left_acc_.take(&c.left_dx, &c.left_dy);
   right_acc_.take(&c.right_dx, &c.right_dy);
   return c;
+}
+
+std::optional<MiceCounts> EvdevReader::take(double now) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!left_.connected() || !right_.connected()) {
+    discard_counts();
+    aligner_.reset();
+    ++withheld_;
+    return std::nullopt;
+  }
+  for (int i = 0; i < 2; ++i)
+    for (const auto& r : acc(i).take_reports()) aligner_.add(i, r.t, r.dx, r.dy);
+  return aligner_.take(now);
+}
+
+AlignerStats EvdevReader::align_stats() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return aligner_.stats();
 }
 
 EvdevDeviceStatus EvdevReader::status(int i) const {

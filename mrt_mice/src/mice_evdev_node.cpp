@@ -28,6 +28,7 @@ struct DriverOptions {
   std::string left_id = "left", right_id = "right";
   std::string frame_prefix;  // ~frame_prefix: mouse frames are <prefix><id>_mouse
   double rate = 50.0;        // ~rate: Hz of MiceReading
+  bool align = true;         // ~align: both mice interpolated at a common instant (CountAligner)
 };
 
 DriverOptions load_options(const ros::NodeHandle& pnh) {
@@ -40,9 +41,17 @@ DriverOptions load_options(const ros::NodeHandle& pnh) {
       .get("frame_prefix", o.frame_prefix)
       .get("rate", o.rate)
       .get("grab", o.reader.grab)
-      .get("reconnect_period", o.reader.reconnect_period);
+      .get("reconnect_period", o.reader.reconnect_period)
+      .get("align", o.align)
+      .get("align_delay", o.reader.align.delay)
+      .get("align_frame", o.reader.align.frame);
   ParamReader::check(o.rate > 0.0 && o.rate <= 1000.0, "rate", "a number in (0, 1000] Hz");
   o.reader.validate();
+  try {
+    o.reader.align.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("~") + e.what());
+  }
   return o;
 }
 
@@ -83,7 +92,11 @@ class MiceEvdevNode {
     mrt_msgs::MiceReading r;
     r.header.stamp = ros::Time::now();
     r.header.frame_id = opt_.frame_prefix + "base_link";
-    const std::optional<MiceCounts> c = reader_.take();
+    // Aligned: the counts up to the common instant, delay before now (on
+    // the events' clock, CLOCK_REALTIME: the wall clock).
+    const std::optional<MiceCounts> c =
+        opt_.align ? reader_.take(ros::WallTime::now().toSec()) : reader_.take();
+    if (opt_.align) r.header.stamp -= ros::Duration(opt_.reader.align.delay);
     if (!c) {
       // A sample needs both mice: publishing zeros for the missing one
       // would tell the odometry that it stood still.
@@ -110,6 +123,10 @@ class MiceEvdevNode {
     else
       s.summary(diagnostic_msgs::DiagnosticStatus::OK, "publishing");
     s.add("withheld samples", reader_.withheld());
+    const AlignerStats a = reader_.align_stats();
+    s.add("aligned", opt_.align ? "yes" : "no");
+    s.add("reports out of order (dropped)", a.out_of_order);
+    s.add("reports late (deferred)", a.late);
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s, int i) {

@@ -60,6 +60,31 @@ void write_event(int fd, int type, int code, int value) {
   ASSERT_EQ(::write(fd, &e, sizeof e), static_cast<ssize_t>(sizeof e));
 }
 
+// Each committed report keeps its SYN_REPORT's time stamp (for the
+// CountAligner); a report without motion is not kept; take() clears them.
+TEST(EvdevAccumulator, KeepsEachReportsTimeStamp) {
+  EvdevAccumulator a;
+  a.feed(EV_REL, REL_Y, -5, 1.000);
+  a.feed(EV_SYN, SYN_REPORT, 0, 1.000);
+  a.feed(EV_SYN, SYN_REPORT, 0, 1.004);  // no motion
+  a.feed(EV_REL, REL_X, 2, 1.008);
+  a.feed(EV_SYN, SYN_REPORT, 0, 1.008);
+  const auto r = a.take_reports();
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_DOUBLE_EQ(r[0].t, 1.000);
+  EXPECT_EQ(r[0].dx, 5);   // x = -REL_Y
+  EXPECT_DOUBLE_EQ(r[1].t, 1.008);
+  EXPECT_EQ(r[1].dy, -2);  // y = -REL_X
+  std::int64_t dx, dy;
+  a.take(&dx, &dy);
+  EXPECT_EQ(dx, 0);  // take_reports cleared the counts too
+  a.feed(EV_REL, REL_Y, -1, 2.0);
+  a.feed(EV_SYN, SYN_REPORT, 0, 2.0);
+  a.take(&dx, &dy);
+  EXPECT_EQ(dx, 1);
+  EXPECT_TRUE(a.take_reports().empty());  // and take() the reports
+}
+
 TEST(EvdevMouse, ReadsUnplugsAndReconnects) {
   const std::string path = ::testing::TempDir() + "mrt_mice_fake_mouse_" + std::to_string(::getpid());
   ::unlink(path.c_str());

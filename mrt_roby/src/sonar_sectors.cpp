@@ -31,21 +31,33 @@ SonarSectors::SonarSectors(std::vector<double> mount_deg, std::vector<Sector> se
       max_range_(max_range), stale_after_(stale_after) {
   if (!(max_range > 0.0)) throw std::invalid_argument("max_range must be > 0");
   if (!(stale_after >= 0.0)) throw std::invalid_argument("stale_after must be >= 0");
-  for (std::size_t i = 0; i < mount_deg.size(); ++i) {
-    // Beam axis in (-180, 180].
-    const double a = common::rad_to_deg(common::normalize_angle(common::deg_to_rad(mount_deg[i])));
-    for (std::size_t s = 0; s < sectors_.size(); ++s) {
-      const bool after_from = a >= sectors_[s].from_deg - 1e-9, before_to = a <= sectors_[s].to_deg + 1e-9;
-      const bool wraps = sectors_[s].from_deg > sectors_[s].to_deg;
-      if (wraps ? (after_from || before_to) : (after_from && before_to)) members_[s].push_back(i);
-    }
+  for (std::size_t i = 0; i < mount_deg.size(); ++i) add_member(i, mount_deg[i]);
+}
+
+void SonarSectors::add_member(std::size_t i, double mount_deg) {
+  // Beam axis in (-180, 180].
+  const double a = common::rad_to_deg(common::normalize_angle(common::deg_to_rad(mount_deg)));
+  for (std::size_t s = 0; s < sectors_.size(); ++s) {
+    const bool after_from = a >= sectors_[s].from_deg - 1e-9, before_to = a <= sectors_[s].to_deg + 1e-9;
+    const bool wraps = sectors_[s].from_deg > sectors_[s].to_deg;
+    if (wraps ? (after_from || before_to) : (after_from && before_to)) members_[s].push_back(i);
   }
 }
 
-bool SonarSectors::set_range(std::size_t sonar, double range_m, double t) {
+bool SonarSectors::set_mount(std::size_t sonar, double mount_deg) {
+  if (sonar >= ranges_.size() || !std::isfinite(mount_deg)) return false;
+  for (auto& m : members_) m.erase(std::remove(m.begin(), m.end(), sonar), m.end());
+  add_member(sonar, mount_deg);
+  return true;
+}
+
+bool SonarSectors::set_range(std::size_t sonar, double range_m, double t, double sensor_max) {
   if (sonar >= ranges_.size() || std::isnan(range_m)) return false;
   if (range_m == -std::numeric_limits<double>::infinity()) range_m = 0.0;  // too close to measure
   if (range_m < 0.0) return false;
+  // Beyond the sensor's own max_range a reading says only "nothing within
+  // max_range" (REP-117): it counts as that range, not as what it claims.
+  if (sensor_max > 0.0) range_m = std::min(range_m, sensor_max);
   ranges_[sonar] = std::min(range_m, max_range_);  // +Inf: nothing in range
   times_[sonar] = t;
   return true;

@@ -161,6 +161,27 @@ TEST(SonarSectors, InfinitiesAsRep117AndStaleSonarsBlock) {
   EXPECT_THROW(SonarSectors(even_mounts_deg(8), default_sectors(), 5.0, -1.0), std::invalid_argument);
 }
 
+// Each Range message's own geometry: its max_range caps the reading (a
+// sonar of 3 m range claiming 4.5 m says only "nothing within 3 m"), and a
+// sonar's beam axis moved by set_mount (the node takes it from tf) changes
+// its sector. 8 sonars every 45 deg as above.
+TEST(SonarSectors, RangeMessageGeometry) {
+  SonarSectors s(even_mounts_deg(8), default_sectors(), 5.0);
+  EXPECT_TRUE(s.set_range(0, 4.5, 0.0, 3.0));
+  EXPECT_DOUBLE_EQ(s.distances()[0], 3.0);   // front: capped at the sensor's 3 m
+  EXPECT_TRUE(s.set_range(0, INFINITY, 0.0, 3.0));
+  EXPECT_DOUBLE_EQ(s.distances()[0], 3.0);   // nothing within its 3 m
+  EXPECT_TRUE(s.set_range(1, 1.0));          // 45 deg: front-left
+  EXPECT_DOUBLE_EQ(s.distances()[1], 1.0);
+  // tf says sonar 1 actually looks at -90 deg: right, no longer front-left.
+  EXPECT_TRUE(s.set_mount(1, -90.0));
+  EXPECT_DOUBLE_EQ(s.distances()[1], 5.0);
+  EXPECT_DOUBLE_EQ(s.distances()[4], 1.0);
+  EXPECT_EQ(s.members()[4], (std::vector<std::size_t>{6, 1}));
+  EXPECT_FALSE(s.set_mount(9, 0.0));
+  EXPECT_FALSE(s.set_mount(1, NAN));
+}
+
 TEST(CrispBuilder, RuleBaseUnits) {
   CrispInputs in;
   in.goal = GoalCrisp{250.0, -30.0};

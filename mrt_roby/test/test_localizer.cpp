@@ -64,6 +64,37 @@ TEST(DgpsLocalizer, IntegratesWheelSpeedsBetweenStamps) {
   EXPECT_NEAR(l.pose().y, 0.014950 + 0.099335, 1e-6);
 }
 
+// The pose covariance reflects the fix quality. Gain g = 0.5, fixes of
+// variance R: var' = 0.25 var + 0.25 R. From the initial 1 m^2:
+//   DGPS (GBAS, no covariance given: sigma 0.3 m, R = 0.09):
+//     0.25 + 0.0225 = 0.2725, then 0.068125 + 0.0225 = 0.090625;
+//     the fixed point is R / 3 = 0.03.
+//   an autonomous fix (sigma 3 m, R = 9) from 0.03: 0.0075 + 2.25 = 2.2575.
+//   a fix with its own covariance (east 4, north 1): R = max = 4.
+// Driving 2 m straight adds 0.01 m^2 per m: + 0.02.
+TEST(DgpsLocalizer, CovarianceReflectsTheFixQuality) {
+  DgpsLocalizer l(Pose2D(0, 0, 0));
+  EXPECT_DOUBLE_EQ(l.covariance()[0], 1.0);
+  const double gbas = l.fix_variance(2, false, 0, 0);
+  EXPECT_DOUBLE_EQ(gbas, 0.09);
+  l.correct(0, 0, gbas);
+  EXPECT_NEAR(l.covariance()[0], 0.2725, 1e-12);
+  l.correct(0, 0, gbas);
+  EXPECT_NEAR(l.covariance()[0], 0.090625, 1e-12);
+  EXPECT_EQ(l.covariance()[4], l.covariance()[0]);
+  for (int i = 0; i < 40; ++i) l.correct(0, 0, gbas);
+  EXPECT_NEAR(l.covariance()[0], 0.03, 1e-9);
+  l.correct(0, 0, l.fix_variance(0, false, 0, 0));
+  EXPECT_NEAR(l.covariance()[0], 0.0075 + 2.25, 1e-9);
+  EXPECT_DOUBLE_EQ(l.fix_variance(1, false, 0, 0), 1.0);
+  EXPECT_DOUBLE_EQ(l.fix_variance(2, true, 4.0, 1.0), 4.0);
+  EXPECT_LT(l.fix_variance(-1, false, 0, 0), 0.0);
+  const double before = l.covariance()[0];
+  l.predict(1.0, 0.0, 2.0);
+  EXPECT_NEAR(l.covariance()[0], before + 0.02, 1e-12);
+  EXPECT_GT(l.covariance()[8], 0.0);
+}
+
 TEST(DgpsLocalizer, OptionsValidate) {
   DgpsLocalizerOptions o;
   EXPECT_NO_THROW(o.validate());

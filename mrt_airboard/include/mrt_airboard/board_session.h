@@ -72,6 +72,7 @@ struct SessionOptions {
   double reconnect_max = 2.0;      // s, longest back-off delay
   bool set_gains = false;          // send SET_GAINS(kp, ki) on connection
   double kp = 0.05, ki = 1.0;
+  bool checked_commands = true;    // SET_SPEED / SET_PWM with the CRC-32 trailer (the board then refuses plain ones)
   BaseParams base;
   BrianMappingParams brian;
 

@@ -31,6 +31,7 @@ struct FirmwareConfig {
   double tau = 0.02;                // s, mechanical time constant
   double stall_current = 10.0;      // A at 100 % duty, standstill
   double current_limit = 8.0;       // A: the firmware limits the duty above it
+  bool require_checked = false;     // refuse plain SET_SPEED / SET_PWM from power-up
 };
 
 class Firmware {
@@ -58,6 +59,10 @@ class Firmware {
   uint32_t watchdog_trips() const { return trips_; }
   uint64_t commands_applied() const { return applied_; }
   uint64_t commands_rejected() const { return rejected_; }
+  /// Checked set commands refused because their CRC-32 failed (damage that
+  /// passed the CRC-16).
+  uint64_t check_failures() const { return check_failures_; }
+  bool strict() const { return strict_ || c_.require_checked; }
   const FrameDecoder::Stats& rx_stats() const { return dec_.stats(); }
   BoardState state() const;
   BoardInfo info() const;
@@ -85,6 +90,9 @@ class Firmware {
   void reply_state(uint8_t seq);
   void reply_set(uint8_t seq);  // STATE, or SHORT_STATE in the compact format
   void command_received(uint8_t seq);
+  bool accept_check(bool checked);
+  template <class Nack>
+  void refuse_set(const Frame& f, const Nack& nack);
   void control(Motor& m);
 
   FirmwareConfig c_;
@@ -102,7 +110,8 @@ class Firmware {
   uint16_t stream_ms_ = 0;
   uint8_t format_ = proto::kFormatState;
   uint32_t streamed_ = 0;
-  uint64_t applied_ = 0, rejected_ = 0;
+  uint64_t applied_ = 0, rejected_ = 0, check_failures_ = 0;
+  bool strict_ = false;
   std::size_t hist_at_ = 0;
 };
 

@@ -56,6 +56,14 @@ constexpr uint8_t kNackUnknownType = 1;
 constexpr uint8_t kNackBadLength = 2;
 constexpr uint8_t kNackBadMotorCount = 3;
 constexpr uint8_t kNackBadArgument = 4;
+constexpr uint8_t kNackBadCheck = 5;      // a checked set command whose CRC-32 does not match
+constexpr uint8_t kNackUnchecked = 6;     // a plain set command after checked ones (strict mode)
+
+// Checked set commands: SET_SPEED / SET_PWM may end with a u32 CRC-32
+// (ISO-HDLC, Boost's crc_32_type) of TYPE, SEQ and the payload before it:
+// LEN 5 + 4 n (SET_SPEED) or 5 + 2 n (SET_PWM). Damage must then pass both
+// the frame's CRC-16 and this CRC-32 to be applied.
+constexpr std::size_t kCheckSize = 4;
 }  // namespace proto
 
 /// CRC-16/CCITT-FALSE; crc16_ccitt("123456789") == 0x29B1.
@@ -170,8 +178,11 @@ int32_t to_mrad(double rad_per_s);
 int16_t to_duty(double duty);
 int32_t to_q16(double v);
 
-Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds);
-Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties);
+/// `checked`: append the CRC-32 trailer (see proto::kCheckSize).
+Frame make_set_speed(uint8_t seq, const std::vector<double>& speeds, bool checked = false);
+Frame make_set_pwm(uint8_t seq, const std::vector<double>& duties, bool checked = false);
+/// CRC-32 of TYPE, SEQ and the first `n` payload bytes.
+uint32_t command_check(const Frame& f, std::size_t n);
 Frame make_set_gains(uint8_t seq, const Gains& g);
 Frame make_simple(uint8_t type, uint8_t seq);  // GET_STATE, HEARTBEAT, GET_INFO
 Frame make_set_stream(uint8_t seq, uint16_t period_ms);  // 2-byte payload (format STATE)
@@ -185,8 +196,13 @@ Frame make_nack(uint8_t seq, uint8_t type, uint8_t reason);
 /// Decoders: false when the type or the exact payload length is wrong, or
 /// when the motor count is 0 or above kMaxMotors. Values as on the wire
 /// (not clamped: the firmware clamps and reports).
-bool parse_set_speed(const Frame& f, std::vector<double>* speeds);
-bool parse_set_pwm(const Frame& f, std::vector<double>* duties);
+/// Set commands, plain or checked (`checked`, when given, says which); false
+/// also when a checked command's CRC-32 does not match (then
+/// set_check_failed() is true).
+bool parse_set_speed(const Frame& f, std::vector<double>* speeds, bool* checked = nullptr);
+bool parse_set_pwm(const Frame& f, std::vector<double>* duties, bool* checked = nullptr);
+/// True for a SET_SPEED / SET_PWM of the checked length whose CRC-32 fails.
+bool set_check_failed(const Frame& f);
 bool parse_set_gains(const Frame& f, Gains* g);
 bool parse_set_stream(const Frame& f, uint16_t* period_ms, uint8_t* format = nullptr);  // format 0 when absent
 bool parse_short_state(const Frame& f, ShortState* s);

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <vector>
 
 #include "mrt_airboard/protocol.h"
@@ -13,7 +15,15 @@ class StateTracker {
  public:
   /// `drift_ppm`: how fast the host-board clock offset may grow (the offset
   /// follows the smallest observed transport delay; it can always shrink).
-  explicit StateTracker(double drift_ppm = 1000.0) : drift_(drift_ppm * 1e-6) {}
+  /// `window_s`: the offset is never below the smallest (host - board) of
+  /// the frames received in the last `window_s` of host time, so the stamps
+  /// lag the reception of the latest frame by at most the delay spread of
+  /// that window. Without it (window_s <= 0) a host clock that stalls while
+  /// the board runs on (mrt_sim's /clock under load against the emulator's
+  /// wall clock) lowers the offset for good and the stamps fall behind by
+  /// the sum of the stalls, recovered only at `drift_ppm`.
+  explicit StateTracker(double drift_ppm = 1000.0, double window_s = 1.0)
+      : drift_(drift_ppm * 1e-6), window_(window_s) {}
 
   /// Feeds a STATE received at host time `host_time` (s). Returns false when
   /// it brings nothing new (same or older board time, e.g. a reply and a
@@ -32,7 +42,10 @@ class StateTracker {
   /// odometry must take a new reference.
   bool rebased() const { return rebased_; }
   /// Forgets everything (after a reconnection the board may have restarted).
-  void reset() { have_ = false; }
+  void reset() {
+    have_ = false;
+    recent_.clear();
+  }
 
   bool valid() const { return have_; }
   /// Cumulative counts since the first STATE after reset(), 64 bit.
@@ -44,6 +57,11 @@ class StateTracker {
 
  private:
   double drift_;
+  double window_;
+  // (host time, host - board) of the recent frames, offsets increasing
+  // front to back: the front is the window's minimum.
+  std::deque<std::pair<double, double>> recent_;
+  void remember(double host_time);
   bool advance(uint32_t dms, double host_time);
   bool have_ = false;
   bool rebased_ = false;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
 
 struct libevdev;
@@ -18,10 +19,20 @@ namespace mrt::mice {
 /// next SYN_REPORT, as the evdev protocol asks.
 class EvdevAccumulator {
  public:
-  /// Feeds one event (type, code, value of struct input_event).
-  void feed(std::uint16_t type, std::uint16_t code, std::int32_t value);
-  /// Returns the committed counts since the last take and clears them.
+  /// One committed report with motion: its time stamp (the SYN_REPORT's
+  /// event time, s) and counts in the mouse frame.
+  struct Report {
+    double t;
+    std::int64_t dx, dy;
+  };
+  /// Feeds one event (type, code, value and time of struct input_event).
+  void feed(std::uint16_t type, std::uint16_t code, std::int32_t value, double t = 0.0);
+  /// Returns the committed counts since the last take and clears them (and
+  /// the stamped reports).
   void take(std::int64_t* dx, std::int64_t* dy);
+  /// The stamped reports since the last take (for CountAligner), clearing
+  /// them and the counts.
+  std::deque<Report> take_reports();
   std::uint64_t reports() const { return reports_; }
   std::uint64_t dropped() const { return dropped_; }
 
@@ -31,6 +42,8 @@ class EvdevAccumulator {
   bool discarding_ = false;
   std::uint64_t reports_ = 0;
   std::uint64_t dropped_ = 0;
+  static constexpr std::size_t kMaxStamped = 4096;
+  std::deque<Report> stamped_;
 };
 
 /// One evdev device: open (non-blocking), grab, read what is available,

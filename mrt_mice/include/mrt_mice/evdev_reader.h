@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "mrt_mice/count_aligner.h"
 #include "mrt_mice/evdev_mouse.h"
 #include "mrt_mice/mice_params.h"  // MiceCounts
 
@@ -23,6 +24,7 @@ struct EvdevReaderOptions {
   std::string left_device, right_device;  // paths of the two evdev devices
   bool grab = true;                       // exclusive access (EVIOCGRAB)
   double reconnect_period = 1.0;          // s between reopen attempts
+  AlignerOptions align;                   // take(now): both mice interpolated at now - align.delay
 
   /// Throws std::invalid_argument naming the option as its node parameter
   /// ("~right_device: ...").
@@ -58,6 +60,12 @@ class EvdevReader {
   /// nothing: the counts are dropped (a missing mouse is not a mouse
   /// standing still) and the sample is counted as withheld.
   std::optional<MiceCounts> take();
+  /// The same, the two streams aligned: each mouse's reports, stamped with
+  /// their event times, interpolated at `now - delay` (CountAligner). `now`
+  /// is on the events' clock (evdev stamps with CLOCK_REALTIME by default:
+  /// the wall clock). While a mouse is missing the aligner is reset.
+  std::optional<MiceCounts> take(double now);
+  AlignerStats align_stats() const;
 
   EvdevDeviceStatus status(int device) const;
   bool both_connected() const;
@@ -81,6 +89,7 @@ class EvdevReader {
   mutable std::mutex mutex_;
   EvdevMouse left_, right_;
   EvdevAccumulator left_acc_, right_acc_;
+  CountAligner aligner_;
   std::uint64_t unplugs_[2] = {0, 0};
   std::uint64_t withheld_ = 0;
   bool tried_ = false;

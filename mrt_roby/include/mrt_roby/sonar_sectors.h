@@ -1,6 +1,7 @@
 // Sonar belt -> sector distances, the crisp data of AvoidObstacle. ROS-free.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,13 @@ class SonarSectors {
   /// +Inf is "nothing within range" (max_range) and -Inf "too close to
   /// measure" (0); NaN or a negative range is refused (returns false) and
   /// the old reading kept.
-  bool set_range(std::size_t sonar, double range_m, double t = 0.0);
+  /// `sensor_max` (> 0): the sensor's own maximum range (sensor_msgs/Range
+  /// max_range); a reading above it counts as sensor_max.
+  bool set_range(std::size_t sonar, double range_m, double t = 0.0,
+                 double sensor_max = std::numeric_limits<double>::infinity());
+  /// Moves sonar i's beam axis (deg, CCW from ahead), e.g. to the direction
+  /// tf gives for its Range message's frame. False for a bad index or angle.
+  bool set_mount(std::size_t sonar, double mount_deg);
   /// Minimum range per sector (m) at time `now`, in the order of `sectors()`.
   std::vector<double> distances(double now = 0.0) const;
   /// Sonars whose reading is stale at `now` (never read counts as stale).
@@ -52,6 +59,7 @@ class SonarSectors {
   std::vector<std::vector<std::size_t>> members_;  // per sector, sonar indices
   double max_range_, stale_after_;
   bool is_stale(std::size_t sonar, double now) const;
+  void add_member(std::size_t sonar, double mount_deg);
 };
 
 /// Evenly spaced sonar mounts, the first facing forward (mrt_sim's `count`).

@@ -4,6 +4,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <mrt_msgs/PlanRequest.h>
 #include <nav_msgs/Path.h>
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -23,7 +24,11 @@ class PlannerNode {
     path_pub_ = nh.advertise<nav_msgs::Path>("path", 5, true);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("map_markers", 1, true);
     sub_ = nh.subscribe("replan_request", 5, &PlannerNode::on_request, this);
+    diag_.setHardwareID("route planner");
+    diag_.add("route planner", this, &PlannerNode::diagnose);
+    diag_timer_ = nh.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diag_.update(); });
     route_ = planner_.plan(start);
+    last_size_ = route_.size();
     publish_markers();
     publish(route_);
   }
@@ -31,9 +36,11 @@ class PlannerNode {
  private:
   void on_request(const mrt_msgs::PlanRequest& r) {
     if (!std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.failed_x) || !std::isfinite(r.failed_y)) {
+      ++dropped_;
       ROS_WARN_THROTTLE(5, "dropped a non-finite plan request");
       return;
     }
+    ++replans_;
     ROS_INFO("re-plan from (%.2f, %.2f): path point (%.2f, %.2f) unreachable (%s)", r.x, r.y, r.failed_x,
              r.failed_y, r.reason.c_str());
     std::vector<Point2D> plan;
@@ -41,9 +48,23 @@ class PlannerNode {
       plan = planner_.replan({r.x, r.y}, {r.failed_x, r.failed_y});
     } catch (const std::runtime_error& e) {
       ROS_ERROR("no plan from (%.2f, %.2f): %s; sending an empty plan (stop)", r.x, r.y, e.what());
+      ++failed_;
+      last_error_ = e.what();
     }
+    last_size_ = plan.size();
     publish(plan);
     publish_markers();
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
+    if (last_size_ == 0)
+      st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "empty plan: " + (last_error_.empty() ? std::string("route done") : last_error_));
+    else
+      st.summary(diagnostic_msgs::DiagnosticStatus::OK, "plan of " + std::to_string(last_size_) + " path points");
+    st.add("re-plans", replans_);
+    st.add("re-plans without a plan", failed_);
+    st.add("requests dropped", dropped_);
+    st.add("path points in the last plan", last_size_);
   }
 
   void publish(const std::vector<Point2D>& pts) {
@@ -128,6 +149,11 @@ class PlannerNode {
   std::vector<Point2D> route_;
   ros::Publisher path_pub_, marker_pub_;
   ros::Subscriber sub_;
+  diagnostic_updater::Updater diag_;
+  ros::Timer diag_timer_;
+  int replans_ = 0, failed_ = 0, dropped_ = 0;
+  std::size_t last_size_ = 0;
+  std::string last_error_;
 };
 
 }  // namespace

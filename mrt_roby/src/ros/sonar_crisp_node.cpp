@@ -6,11 +6,15 @@
 #include <mrt_msgs/CrispDataArray.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Range.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "crisp_msg.h"
+#include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_roby/crisp_builder.h"
 #include "mrt_roby/sonar_sectors.h"
@@ -22,6 +26,7 @@ using namespace mrt::roby;
 struct SonarCrispOptions {
   std::vector<double> mounts_deg;
   double max_range = 5.0, rate = 10.0, input_timeout = 0.5, stale_timeout = 1.0;
+  std::string base_frame = "base_link";  // beam axes from tf: each Range's frame in this one
 
   static SonarCrispOptions read(mrt::ros_common::ParamReader& p) {
     SonarCrispOptions o;
@@ -31,7 +36,8 @@ struct SonarCrispOptions {
         .get_positive("max_range", o.max_range)
         .get_positive("rate", o.rate)
         .get_positive("input_timeout", o.input_timeout)
-        .get_non_negative("stale_timeout", o.stale_timeout);
+        .get_non_negative("stale_timeout", o.stale_timeout)
+        .get("base_frame", o.base_frame);
     p.check(o.rate <= 1000, "rate", "a number in (0, 1000]");
     if (p.node_handle().hasParam("mounts_deg")) {
       p.check(!o.mounts_deg.empty(), "mounts_deg", "a non-empty list of beam directions (deg)");
@@ -46,7 +52,11 @@ struct SonarCrispOptions {
 class SonarCrispNode {
  public:
   SonarCrispNode(ros::NodeHandle& nh, const SonarCrispOptions& o)
-      : sectors_(o.mounts_deg, default_sectors(), o.max_range, o.stale_timeout), input_timeout_(o.input_timeout) {
+      : sectors_(o.mounts_deg, default_sectors(), o.max_range, o.stale_timeout),
+        input_timeout_(o.input_timeout),
+        base_frame_(o.base_frame),
+        mount_frames_(o.mounts_deg.size()),
+        tf_listener_(tf_buffer_) {
     for (std::size_t i = 0; i < o.mounts_deg.size(); ++i)
       subs_.push_back(nh.subscribe<sensor_msgs::Range>(
           "sonar/" + std::to_string(i), 5, std::bind(&SonarCrispNode::on_sonar, this, i, std::placeholders::_1)));
@@ -60,8 +70,27 @@ class SonarCrispNode {
   }
 
  private:
+  // The beam axis of sonar i from tf (its Range's frame_id in ~base_frame:
+  // the frame's x axis is the beam), looked up once per frame name; until
+  // tf has it, the configured mount stays in force.
+  void update_mount(std::size_t i, const std::string& frame) {
+    if (frame.empty() || frame == mount_frames_[i]) return;
+    try {
+      const auto t = tf_buffer_.lookupTransform(base_frame_, frame, ros::Time(0));
+      const double yaw = mrt::ros_common::quaternion_to_yaw(t.transform.rotation);
+      if (sectors_.set_mount(i, yaw * 180.0 / M_PI)) {
+        mount_frames_[i] = frame;
+        ++mounts_from_tf_;
+      }
+    } catch (const tf2::TransformException& e) {
+      ROS_DEBUG_THROTTLE(5, "no tf yet for sonar %zu's frame %s: %s", i, frame.c_str(), e.what());
+    }
+  }
+
   void on_sonar(std::size_t i, const sensor_msgs::RangeConstPtr& r) {
-    if (!sectors_.set_range(i, r->range, ros::Time::now().toSec())) {
+    update_mount(i, r->header.frame_id);
+    const double sensor_max = r->max_range > 0.0 ? r->max_range : std::numeric_limits<double>::infinity();
+    if (!sectors_.set_range(i, r->range, ros::Time::now().toSec(), sensor_max)) {
       ++dropped_;
       ROS_WARN_THROTTLE(5, "dropped a bad reading of sonar %zu (%d dropped)", i, dropped_);
       return;
@@ -82,6 +111,7 @@ class SonarCrispNode {
     st.add("sonars", sectors_.sonar_count());
     st.add("stale sonars", stale.size());
     st.add("dropped readings", dropped_);
+    st.add("beam axes from tf", mounts_from_tf_);
     const std::vector<double> d = sectors_.distances(ros::Time::now().toSec());
     for (std::size_t s = 0; s < d.size(); ++s) st.add(sectors_.sectors()[s].name + " (m)", d[s]);
   }
@@ -118,6 +148,11 @@ class SonarCrispNode {
 
   SonarSectors sectors_;
   double input_timeout_;
+  std::string base_frame_;
+  std::vector<std::string> mount_frames_;  // frame each sonar's axis was taken from ("" = configured)
+  int mounts_from_tf_ = 0;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
   std::vector<std::string> names_;
   mrt_msgs::CrispDataArray goal_;
   ros::Time goal_time_;
