@@ -32,8 +32,9 @@ def roby_summary(bag, info):
           + ("" if done is not None else " (route still running when the recording ended)"))
     print(f"roby: tasks failed: {end.failed}, re-plan requests: {end.replans}, mode: {end.mode}")
     minimum = None
-    for _, msg, _ in bag.read_messages(
-            topics=[t for t in info.topics if t.endswith("/min_clearance")]):
+    clearance = [t for t in info.topics if t.endswith("/min_clearance")]
+    # read_messages(topics=[]) would read every topic: only when recorded.
+    for _, msg, _ in bag.read_messages(topics=clearance) if clearance else []:
         minimum = msg.data
     if minimum is not None:
         print(f"roby: minimum obstacle clearance (ground truth): {minimum:.3f} m")

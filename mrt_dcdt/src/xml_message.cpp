@@ -5,7 +5,6 @@
 #include <libxml/valid.h>
 #include <libxml/xmlerror.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -102,10 +101,12 @@ std::string prop(xmlNodePtr n, const char* name, bool* present = nullptr) {
 }
 
 double parse_number(xmlNodePtr n, const char* attr, const std::string& s) {
-  errno = 0;
   char* end = nullptr;
+  // strtod flags both overflow (+-HUGE_VAL, not finite) and underflow
+  // (a subnormal such as 5e-324, which encode_xml writes) with ERANGE:
+  // only the overflow is an error.
   double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+  if (s.empty() || *end != '\0' || !std::isfinite(v))
     throw XmlError(xmlGetLineNo(n), std::string("attribute '") + attr + "' is not a finite number: '" + s + "'");
   return v;
 }

@@ -93,6 +93,9 @@ TEST(Xml, RoundTripIsLossless) {
   m.objects.push_back({"ball", "Ball", {{"x", 0.1 + 0.2, "", 1e-300, 0.3333333333333333}, {"team", 0, "cyan", 0, 0}}});
   m.objects.push_back({"ünïcode", "Person", {{"v", -std::numeric_limits<double>::max(), "", 0, 1}}});
   m.objects.push_back({"empty", "Obstacle", {}});
+  // The smallest subnormal (5e-324) and the largest finite value survive too.
+  m.objects.push_back({"tiny", "Obstacle", {{"d", std::numeric_limits<double>::denorm_min(), "", 0, 1},
+                                            {"h", std::numeric_limits<double>::max(), "", 0, 1}}});
   ExpectEqual(decode_xml(encode_xml(m)), m);
   ExpectEqual(decode_xml(encode_xml(decode_xml(Data("percept_ball.xml")))), decode_xml(Data("percept_ball.xml")));
 }
@@ -124,6 +127,8 @@ TEST(Xml, SemanticErrors) {
             std::string::npos);
   EXPECT_NE(err("<object name='a' class='B'><attribute name='x' value='nan'/></object>").find("finite"),
             std::string::npos);
+  EXPECT_NE(err("<object name='a' class='B'><attribute name='x' value='1e999'/></object>").find("finite"),
+            std::string::npos);  // overflows to infinity
   EXPECT_NE(err("<object name='a' class='B'><attribute name='x' value='1' reliability='1.5'/></object>")
                 .find("reliability"),
             std::string::npos);

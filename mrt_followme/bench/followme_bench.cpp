@@ -11,11 +11,12 @@
 #include "mrt_sim/world.h"
 
 int main(int argc, char** argv) {
-  const std::string root = argc > 1 ? argv[1] : MRT_FOLLOWME_ROOT "/..";
+  // followme_bench [WORLD [CONFIG_DIR]]: mrt_sim's museum and this package's config by default.
+  const std::string config = argc > 2 ? argv[2] : MRT_FOLLOWME_ROOT "/config";
   mrt::followme::FollowMeLoopOptions o;
-  o.world = root + "/mrt_sim/worlds/museum.yaml";
-  o.config = root + "/mrt_followme/config/followme.yaml";
-  o.brian = root + "/mrt_followme/config/brian/BrianConfigs.ini";
+  o.world = argc > 1 ? argv[1] : MRT_SIM_WORLDS "/museum.yaml";
+  o.config = config + "/followme.yaml";
+  o.brian = config + "/brian/BrianConfigs.ini";
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   const auto r = mrt::followme::run_followme_loop(o);
