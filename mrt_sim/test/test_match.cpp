@@ -233,6 +233,30 @@ TEST(Match, GoalkeeperStaysBetweenBallAndGoalCentre) {
   EXPECT_NEAR(cross, 0.0, 1e-5);
 }
 
+TEST(Match, ScriptedAttackerScoresOnAnEmptyGoal) {
+  // Kick-off at t = 0, start at 2 s. The attacker (home (1.5, 2), 1 m/s)
+  // walks to the point behind the ball on the line from the blue goal
+  // (-9, 0): (0.38, 0), 2.29 m away, reached at about 4.3 s, with the
+  // ball 0.38 m < 0.41 m away: it shoots at 5 m/s towards (-9, 0). The ball
+  // is past x = -9.11 after 9.11 m: speed sqrt(25 - 0.8 * 9.11) = 4.2 m/s,
+  // about 2 s later. Goal for magenta, 0-1, before 8 s; never before 4 s.
+  MatchConfig c = quiet();
+  c.referee.auto_start = true;
+  c.referee.restart_delay = 2.0;
+  c.opponents = {{"forward", "attacker", {1.5, 2.0}, 0.25, 1.0}};
+  Fixture f(field("{x: 0, y: 0, friction: 0.4}", "[-2, 5, 0]"), c);
+  f.run(4.0);
+  EXPECT_EQ(f.find(RefereeCommand::kGoal), nullptr);
+  f.run(4.0);
+  const RefereeEvent* g = f.find(RefereeCommand::kGoal);
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->team, 1);
+  EXPECT_EQ(g->score[1], 1);
+  EXPECT_LT(g->position.x, -9.11);
+  EXPECT_GT(g->time, 5.5);
+  EXPECT_EQ(f.match.last_touch(), 1);
+}
+
 TEST(Match, OperatorStopAndStart) {
   Fixture f(field("{x: 0, y: 0}"), quiet());
   EXPECT_EQ(f.match.state(), Match::State::kStopped);
