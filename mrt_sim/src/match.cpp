@@ -154,12 +154,20 @@ Point2D Match::opponent_target(std::size_t k) const {
     return add(b.position, unit(sub(g, b.position)), d);
   }
   if (o.role == "attacker") {
+    if (opponents_wait()) return m.position;
     // Behind the ball on the line from the goal it attacks; then through it.
     const Point2D target = mouth(own_goal_);
     const Point2D behind = add(b.position, unit(sub(b.position, target)), o.radius + b.radius + 0.02);
     return dist(m.position, behind) > 0.1 ? behind : b.position;
   }
   return o.home;  // static
+}
+
+// Team 0's restart (kick-off, throw-in, ...): the opponents leave the ball
+// to them until it has moved 0.3 m or restart_wait has passed.
+bool Match::opponents_wait() const {
+  return restart_for_ == 0 && sim_.time() - play_since_ < cfg_.referee.restart_wait &&
+         dist(sim_.world().ball.position, restart_spot_) < 0.3;
 }
 
 void Match::steer_opponents() {
@@ -218,7 +226,7 @@ void Match::opponent_kicks() {
   for (std::size_t k = 0; k < opponent_movers_.size(); ++k) {
     const OpponentConfig& o = cfg_.opponents[k];
     const Mover& m = sim_.world().movers[opponent_movers_[k]];
-    if (o.role == "static" || opponent_cooldown_[k] > 0.0 || holder_ >= 0) continue;
+    if (o.role == "static" || opponent_cooldown_[k] > 0.0 || holder_ >= 0 || opponents_wait()) continue;
     if (dist(m.position, b.position) > o.radius + b.radius + cfg_.kicker.reach) continue;
     // The keeper clears towards the other goal, the others shoot at it.
     const Point2D dir = o.role == "goalkeeper" ? unit(sub(mouth(own_goal_), mouth(other_goal_)))
@@ -279,6 +287,7 @@ void Match::command(RefereeCommand c, int team) {
       return;
     case RefereeCommand::kStart:
       state_ = State::kPlaying;
+      restart_for_ = -1;
       stuck_anchor_ = sim_.world().ball.position;
       stuck_since_ = sim_.time();
       emit(c, team, sim_.world().ball.position, "operator");
@@ -323,8 +332,9 @@ void Match::referee() {
   if (start_pending_ && now >= restart_time_ - 1e-9) {
     start_pending_ = false;
     state_ = State::kPlaying;
-    stuck_anchor_ = b.position;
-    stuck_since_ = now;
+    stuck_anchor_ = restart_spot_ = b.position;
+    stuck_since_ = play_since_ = now;
+    restart_for_ = restart_team_;
     emit(RefereeCommand::kStart, -1, b.position, "restart");
     return;
   }

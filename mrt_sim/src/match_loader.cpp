@@ -80,10 +80,11 @@ class MatchLoader : private mrt::common::YamlReader {
   }
 
   RefereeConfig referee(const Node& n) const {
-    map(n, "referee", {"restart_delay", "stuck_timeout", "kickoff_team", "auto_start"});
+    map(n, "referee", {"restart_delay", "stuck_timeout", "kickoff_team", "auto_start", "restart_wait"});
     RefereeConfig r;
     r.restart_delay = non_negative(n, "restart_delay", r.restart_delay);
     r.stuck_timeout = non_negative(n, "stuck_timeout", r.stuck_timeout);
+    r.restart_wait = non_negative(n, "restart_wait", r.restart_wait);
     if (const Node k = n["kickoff_team"]) r.kickoff_team = static_cast<int>(integer(k, "kickoff_team", 0, 1));
     r.auto_start = boolean(n, "auto_start", r.auto_start);
     return r;

@@ -243,6 +243,7 @@ TEST(Match, ScriptedAttackerScoresOnAnEmptyGoal) {
   MatchConfig c = quiet();
   c.referee.auto_start = true;
   c.referee.restart_delay = 2.0;
+  c.referee.kickoff_team = 1;  // theirs: no waiting
   c.opponents = {{"forward", "attacker", {1.5, 2.0}, 0.25, 1.0}};
   Fixture f(field("{x: 0, y: 0, friction: 0.4}", "[-2, 5, 0]"), c);
   f.run(4.0);
@@ -255,6 +256,27 @@ TEST(Match, ScriptedAttackerScoresOnAnEmptyGoal) {
   EXPECT_LT(g->position.x, -9.11);
   EXPECT_GT(g->time, 5.5);
   EXPECT_EQ(f.match.last_touch(), 1);
+}
+
+TEST(Match, OpponentsLeaveTheKickOffToTheKickingTeam) {
+  // Kick-off for team 0 (cyan) at t = 0, start at 2 s: the attacker stays
+  // at its home (1.5, 2) until 2 + restart_wait 5 = 7 s, then goes for the
+  // ball (the behind point (0.38, 0) is 2.29 m away: 2.29 s at 1 m/s) and
+  // scores about 2 s after that: no goal before 7 s, a goal before 13 s.
+  MatchConfig c = quiet();
+  c.referee.auto_start = true;
+  c.referee.restart_delay = 2.0;
+  c.opponents = {{"forward", "attacker", {1.5, 2.0}, 0.25, 1.0}};
+  Fixture f(field("{x: 0, y: 0, friction: 0.4}", "[-2, 5, 0]"), c);
+  f.run(6.9);
+  EXPECT_NEAR(f.sim.world().movers[0].position.x, 1.5, 1e-12);
+  EXPECT_NEAR(f.sim.world().movers[0].position.y, 2.0, 1e-12);
+  EXPECT_EQ(f.find(RefereeCommand::kGoal), nullptr);
+  f.run(6.0);
+  const RefereeEvent* g = f.find(RefereeCommand::kGoal);
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->team, 1);
+  EXPECT_GT(g->time, 9.0);
 }
 
 TEST(Match, OperatorStopAndStart) {

@@ -36,6 +36,8 @@ struct RefereeConfig {
   double restart_delay = 2.0;    // s between a stoppage, the placement and the restart
   double stuck_timeout = 20.0;   // s of play with the ball within 0.2 m: drop ball (0 = never)
   int kickoff_team = 0;          // team taking the first kick-off
+  double restart_wait = 5.0;     // s after the start of team 0's restart during which the
+                                 // opponents do not go for the ball (unless it moved 0.3 m)
   bool auto_start = true;        // kick-off and start at time 0 without an operator
 };
 
@@ -119,6 +121,7 @@ class Match {
  private:
   void steer_opponents();
   Point2D opponent_target(std::size_t k) const;
+  bool opponents_wait() const;
   void robot_kicks();
   void ball_handling();
   void opponent_kicks();
@@ -144,6 +147,9 @@ class Match {
   int restart_team_ = -1;
   Point2D restart_position_;
   double restart_time_ = 0.0;
+  int restart_for_ = -1;                       // team of the restart play started with
+  Point2D restart_spot_;
+  double play_since_ = 0.0;
   Point2D stuck_anchor_;
   double stuck_since_ = 0.0;
   std::vector<RefereeEvent> events_;
