@@ -21,6 +21,7 @@
 #include "mrt_sim/world.h"
 #include "ros/conversions.h"
 #include "ros/markers.h"
+#include "ros/match_interface.h"
 #include "ros/node_options.h"
 #include "ros/robot_interface.h"
 
@@ -35,8 +36,13 @@ double seconds_between(SteadyClock::time_point a, SteadyClock::time_point b) {
 
 class SimNode {
  public:
-  SimNode(ros::NodeHandle& nh, NodeOptions opt, World world)
+  SimNode(ros::NodeHandle& nh, NodeOptions opt, World world, const MatchConfig* match)
       : opt_(std::move(opt)), sim_(std::move(world), opt_.dt()), updater_(nh, ros::NodeHandle("~")) {
+    if (match) {  // the world was prepared by setup_match_world
+      match_ = std::make_unique<Match>(*match, sim_);
+      match_if_ = std::make_unique<MatchInterface>(nh, *match_, opt_.world_frame);
+      updater_.add("match", [this](diagnostic_updater::DiagnosticStatusWrapper& s) { match_if_->diagnose(s); });
+    }
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
     world_markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
     dynamic_markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
@@ -71,7 +77,8 @@ class SimNode {
     while (ros::ok()) {
       ros::spinOnce();  // commands received now act during the next step
       for (auto& r : robots_) r->apply_watchdog();
-      sim_.step();
+      if (match_if_) match_if_->step();  // the match steps the simulator
+      else sim_.step();
       ++steps_;
       const ros::Time stamp(sim_.time());
       if (ros::Time::isSimTime()) ros::Time::setNow(stamp);  // our own clock, without a round trip
@@ -85,6 +92,7 @@ class SimNode {
       const bool path = steps_ % path_every_ == 0;
       tfs.clear();
       for (auto& r : robots_) r->publish(stamp, gt, path, tfs);
+      if (gt && match_if_) match_if_->publish_ball(stamp);
       if (!tfs.empty()) tf_.sendTransform(tfs);
       if (steps_ % marker_every_ == 0 && dynamic_markers_pub_.getNumSubscribers() > 0)
         dynamic_markers_pub_.publish(
@@ -130,6 +138,8 @@ class SimNode {
 
   NodeOptions opt_;
   Simulator sim_;
+  std::unique_ptr<Match> match_;
+  std::unique_ptr<MatchInterface> match_if_;
   std::vector<std::unique_ptr<RobotInterface>> robots_;
   ros::Publisher clock_pub_, world_markers_pub_, dynamic_markers_pub_;
   tf2_ros::TransformBroadcaster tf_;
@@ -153,8 +163,13 @@ int main(int argc, char** argv) {
     ros::NodeHandle nh;
     const NodeOptions opt = load_node_options(ros::NodeHandle("~"));
     mrt::sim::World world;
+    std::unique_ptr<mrt::sim::MatchConfig> match;
     try {
       world = mrt::sim::load_world(opt.world_file);
+      if (!opt.match_file.empty()) {
+        match = std::make_unique<mrt::sim::MatchConfig>(mrt::sim::load_match_config(opt.match_file));
+        mrt::sim::setup_match_world(*match, world);
+      }
     } catch (const mrt::common::ParseError& e) {
       ROS_FATAL("cannot load world: %s", e.what());
       return 2;
@@ -166,7 +181,7 @@ int main(int argc, char** argv) {
       ROS_WARN("/use_sim_time is not set: other nodes will not follow the simulated /clock");
     std::unique_ptr<SimNode> node;
     try {
-      node = std::make_unique<SimNode>(nh, opt, std::move(world));
+      node = std::make_unique<SimNode>(nh, opt, std::move(world), match.get());
     } catch (const std::exception& e) {
       throw std::runtime_error("cannot start the simulation of " + opt.world_file + ": " + e.what());
     }

@@ -20,17 +20,21 @@ constexpr double kPushSpeed = 0.05;  // m/s, extra separating speed of a pushed 
 double dist(const Point2D& a, const Point2D& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 
 // Gives the ball at least the normal velocity of the pusher's surface
-// (centre `c`, radius `r`, contact-point velocity `v`) plus kPushSpeed, and
-// moves it out of the overlap.
+// (centre `c`, radius `r`, contact-point velocity `v`) plus kPushSpeed, or
+// bounces it with the ball's robot_restitution, and moves it out of the
+// overlap.
 void push_ball(Ball& b, const Point2D& c, double r, const Point2D& v) {
   double d = dist(b.position, c);
   if (d >= r + b.radius) return;
   Point2D n{1.0, 0.0};
   if (d > 1e-12) n = {(b.position.x - c.x) / d, (b.position.y - c.y) / d};
   const double rel = (b.velocity.x - v.x) * n.x + (b.velocity.y - v.y) * n.y;
-  if (rel < kPushSpeed) {
-    b.velocity.x += (kPushSpeed - rel) * n.x;
-    b.velocity.y += (kPushSpeed - rel) * n.y;
+  // Separating speed after the contact: the approach speed times the
+  // restitution against bodies (a bounce), at least kPushSpeed.
+  const double out = std::max(kPushSpeed, -b.robot_restitution * rel);
+  if (rel < out) {
+    b.velocity.x += (out - rel) * n.x;
+    b.velocity.y += (out - rel) * n.y;
   }
   b.position = {c.x + (r + b.radius) * n.x, c.y + (r + b.radius) * n.y};
 }

@@ -53,6 +53,10 @@ class Simulator {
   std::uint64_t steps() const { return steps_; }
   double dt() const { return dt_; }
   const World& world() const { return world_; }
+  /// The ball and the movers, for the match layer (match.h) that kicks,
+  /// dribbles, places the ball and steers scripted opponents.
+  Ball& ball() { return world_.ball; }
+  std::vector<Mover>& movers() { return world_.movers; }
   std::vector<RobotState>& robots() { return robots_; }
   const std::vector<RobotState>& robots() const { return robots_; }
   /// Index of the robot named `name`; throws std::out_of_range if none.

@@ -52,6 +52,7 @@ struct Ball {
   double radius = 0.11;
   double friction = 0.4;
   double restitution = 0.6;
+  double robot_restitution = 0.0;  // against robots and movers (0: pushed, no bounce)
   std::string color = "orange";
   bool enabled = false;
 };

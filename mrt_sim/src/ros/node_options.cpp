@@ -37,6 +37,7 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
   ParamReader p(pnh);
   p.require("world", o.world_file, "the path of the world YAML file");
   ParamReader::check(!o.world_file.empty(), "world", "the path of the world YAML file (required)");
+  p.get("match", o.match_file);
   p.get_positive("rate_hz", o.rate_hz);
   ParamReader::check(o.rate_hz <= 100000.0, "rate_hz", "a number <= 100000");
   p.get_positive("real_time_factor", o.real_time_factor)
