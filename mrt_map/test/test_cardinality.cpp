@@ -103,11 +103,14 @@ TEST(Cardinality, NewObjectBelowCardinality) {
 // Two opponents cross in an X unseen: A from (-2, -1) at (1, 0.5) m/s, B
 // from (-2, 1) at (1, -0.5) m/s, seen from 0 to 1 s, unseen from 1 to 3 s
 // (they cross at t = 2 s, x = 0), seen again at t = 3 s: A at (1, 0.5), B at
-// (1, -0.5). With max_count 2 both lost anchors are claimed by the global
-// assignment on d2 + ln det S: A's prediction is (1, 0.5) (exact data), so
-// the crossing assignment costs more than the straight one by the two
-// squared distances of 1 m over the grown covariance: A keeps id 1 at
-// y = 0.5, B id 2 at y = -0.5. Without the cardinality both are new (3, 4).
+// (1, -0.5). With max_count 2 both anchors are kept while lost (beyond
+// drop_after 1 s) and not coalesced where their predictions meet at t = 2 s;
+// at t = 3 s A's prediction is (1, 0.5) (exact data, position variance
+// about q t^3 / 3 = 0.25 * 8 / 3 = 0.67 m^2), so the global assignment takes
+// the straight pairs (d2 ~ 0) over the crossed ones (d2 ~ 1 / 0.67 each):
+// A keeps id 1 at y = 0.5, B id 2 at y = -0.5. Without the cardinality both
+// were dropped and come back new (3, 4). (Without the no-coalescence rule
+// the two lost anchors are joined into one: 1 anchor, not 2.)
 TEST(Cardinality, TwoOpponentsCrossingUnseenKeepTheirIds) {
   for (int max_count : {0, 2}) {
     const ConceptualModel m = model(max_count);
