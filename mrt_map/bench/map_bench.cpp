@@ -157,6 +157,11 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
         std::printf("switch opp %zu: %ld -> %u (new age %.2f s, %s)", o, last_id[o], best->id,
                     w.tracker().now() - best->first_seen, matched_before ? "tracked" : "reacq");
         std::printf(" new: local=%d remotes=%zu", best->has_local, best->remote.size());
+        int nc = 0, nco = 0, nt = 0;
+        for (const Anchor& a : w.tracker().anchors())
+          if (w.model().is_a(a.class_index, opp_class))
+            ++(a.status == AnchorStatus::kConfirmed ? nc : a.status == AnchorStatus::kCoasting ? nco : nt);
+        std::printf(" [opp conf %d coast %d tent %d]", nc, nco, nt);
         if (old)
           std::printf(" old %s d=%.2f m sigma=%.2f unseen %.2f s", to_string(old->status),
                       (old->fused.x.head<2>() - sim.opponents()[o].p).norm(), std::sqrt(old->fused.P(0, 0)),

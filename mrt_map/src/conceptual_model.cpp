@@ -64,7 +64,7 @@ class ModelLoader {
       const std::string what = m_.classes_[i].name;
       if (b.IsNull()) continue;
       r_.map(b, what, {"parent", "attributes", "motion", "accel_noise", "init_speed_sigma", "default_sigma",
-                       "refined_by", "velocity_tau", "drop_after", "max_sigma"});
+                       "refined_by", "velocity_tau", "drop_after", "max_sigma", "max_count"});
       if (const YAML::Node p = b["parent"]) {
         const int pi = m_.find(r_.string(p, "parent"));
         if (pi < 0) r_.fail(p, "unknown parent class '" + p.Scalar() + "' of '" + what + "'");
@@ -111,6 +111,11 @@ class ModelLoader {
     c.velocity_tau = r_.non_negative(b, "velocity_tau", c.velocity_tau);
     c.drop_after = r_.non_negative(b, "drop_after", c.drop_after);
     c.max_sigma = r_.non_negative(b, "max_sigma", c.max_sigma);
+    if (const YAML::Node mc = b["max_count"]) {
+      const double v = r_.non_negative(b, "max_count", 0.0);
+      if (v != std::floor(v) || v > 1000.0) r_.fail(mc, "expected a whole number <= 1000 for 'max_count'");
+      c.max_count = static_cast<int>(v);
+    }
     if (const YAML::Node rb = b["refined_by"]) {
       if (r_.string(rb, "refined_by") != "teammate_pose") r_.fail(rb, "expected 'teammate_pose' for 'refined_by'");
       c.refined_by_teammate_pose = true;

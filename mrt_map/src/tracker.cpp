@@ -65,6 +65,9 @@ void Tracker::coalesce() {
       Anchor& b = anchors_[j];
       if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
       if (!model_.compatible(a.class_index, b.class_index)) continue;
+      // Two lost anchors of a class with a cardinality: their predictions
+      // meet where the objects crossed unseen; nothing says they are one.
+      if (!seen_.count(a.id) && !seen_.count(b.id) && cardinality_class(a.class_index) >= 0) continue;
       const Vec4 y = a.fused.x - b.fused.x;
       // Cheap sufficient reject: the position part alone exceeds the gate.
       if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
@@ -135,6 +138,7 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
     }
   const std::vector<int> match = assign(cost, gate);
   const std::size_t existing = anchors_.size();
+  std::map<int, std::vector<std::size_t>> pending;  // by class at its cardinality: unmatched observations
   for (std::size_t r = 0; r < obs.size(); ++r) {
     const Observation& o = obs[r];
     Anchor* a = nullptr;
@@ -146,31 +150,105 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
       for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
       if (gated) continue;
       a = reidentify(o.class_index, o.z, o.R);
+      if (!a) {
+        const int card = at_cardinality(o.class_index);
+        if (card >= 0) {
+          pending[card].push_back(r);
+          continue;
+        }
+      }
       if (a) refine_class(model_, *a, o.class_index, o.degree);
       else a = &create(now, o.class_index, o.degree);
     }
-    const ClassDef& c = model_.at(a->class_index);
-    if (!a->has_local) {
-      a->local = initialize(o, c);
-      a->local = predict(a->local, c, now);
-      a->has_local = true;
-      a->local_hits = 0;
-      if (a->hits == 0) a->fused = a->local;
-    } else {
-      if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
-        // Manoeuvre: forget the velocity, keep the symbol.
-        a->local.P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
-        a->local.P.block<2, 2>(0, 2).setZero();
-        a->local.P.block<2, 2>(2, 0).setZero();
-        a->local.P.topLeftCorner<2, 2>() += o.R;
-      }
-      update(a->local, o.z, o.R);
-    }
-    ++a->local_hits;
-    a->local_last_seen = a->last_seen = now;
-    a->sources.insert(o.sensors.begin(), o.sensors.end());
-    seen_.insert(a->id);
+    apply_local(now, *a, o);
   }
+  for (const auto& [card, rows] : pending) {
+    std::vector<std::pair<Vec2, Mat2>> zs;
+    for (std::size_t r : rows) zs.emplace_back(obs[r].z, obs[r].R);
+    const std::vector<int> lost = claim_lost(card, zs);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Observation& o = obs[rows[i]];
+      Anchor* a = nullptr;
+      if (lost[i] >= 0) {
+        a = &anchors_[static_cast<std::size_t>(lost[i])];
+        refine_class(model_, *a, o.class_index, o.degree);
+      } else {
+        a = &create(now, o.class_index, o.degree);
+      }
+      apply_local(now, *a, o);
+    }
+  }
+}
+
+void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
+  Anchor* a = &anchor;
+  const ClassDef& c = model_.at(a->class_index);
+  if (!a->has_local) {
+    a->local = initialize(o, c);
+    a->local = predict(a->local, c, now);
+    a->has_local = true;
+    a->local_hits = 0;
+    if (a->hits == 0) a->fused = a->local;
+  } else {
+    if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
+      // Manoeuvre: forget the velocity, keep the symbol.
+      a->local.P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
+      a->local.P.block<2, 2>(0, 2).setZero();
+      a->local.P.block<2, 2>(2, 0).setZero();
+      a->local.P.topLeftCorner<2, 2>() += o.R;
+    }
+    update(a->local, o.z, o.R);
+  }
+  ++a->local_hits;
+  a->local_last_seen = a->last_seen = now;
+  a->sources.insert(o.sensors.begin(), o.sensors.end());
+  seen_.insert(a->id);
+}
+
+int Tracker::cardinality_class(int class_index) const {
+  for (int k = class_index; k >= 0; k = model_.at(k).parent)
+    if (model_.at(k).max_count > 0) return k;
+  return -1;
+}
+
+int Tracker::live_count(int card) const {
+  int live = 0;
+  for (const Anchor& a : anchors_)
+    if ((a.status == AnchorStatus::kConfirmed || a.status == AnchorStatus::kCoasting) &&
+        model_.is_a(a.class_index, card))
+      ++live;
+  return live;
+}
+
+int Tracker::at_cardinality(int class_index) const {
+  const int card = cardinality_class(class_index);
+  return card >= 0 && live_count(card) >= model_.at(card).max_count ? card : -1;
+}
+
+std::vector<int> Tracker::claim_lost(int card_class, const std::vector<std::pair<Vec2, Mat2>>& zs) const {
+  std::vector<int> cols;  // lost anchors: coasting, not supported this cycle
+  for (std::size_t i = 0; i < anchors_.size(); ++i) {
+    const Anchor& a = anchors_[i];
+    if (a.status == AnchorStatus::kCoasting && !seen_.count(a.id) && model_.is_a(a.class_index, card_class))
+      cols.push_back(static_cast<int>(i));
+  }
+  std::vector<int> out(zs.size(), -1);
+  if (cols.empty()) return out;
+  // Square matrix: rows = observations, columns = lost anchors, padded with
+  // a uniform "no anchor" cost so that every cheaper real pair wins.
+  const std::size_t n = std::max(zs.size(), cols.size());
+  constexpr double kNone = 1e12;
+  std::vector<std::vector<double>> cost(n, std::vector<double>(n, kNone));
+  for (std::size_t r = 0; r < zs.size(); ++r)
+    for (std::size_t c = 0; c < cols.size(); ++c) {
+      const Estimate& e = anchors_[static_cast<std::size_t>(cols[c])].fused;
+      const Mat2 S = e.P.topLeftCorner<2, 2>() + zs[r].second;
+      cost[r][c] = mahalanobis2(e, zs[r].first, zs[r].second) + std::log(S.determinant());
+    }
+  const std::vector<int> m = hungarian(cost);
+  for (std::size_t r = 0; r < zs.size(); ++r)
+    if (m[r] >= 0 && static_cast<std::size_t>(m[r]) < cols.size()) out[r] = cols[static_cast<std::size_t>(m[r])];
+  return out;
 }
 
 void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
@@ -212,7 +290,14 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
         bool gated = false;
         for (std::size_t k = 0; k < existing && !gated; ++k) gated = cost[r][k] < gate;
         if (gated) continue;
-        a = reidentify(t.class_index, t.estimate.x.head<2>(), t.estimate.P.topLeftCorner<2, 2>());
+        const Vec2 z = t.estimate.x.head<2>();
+        const Mat2 R = t.estimate.P.topLeftCorner<2, 2>();
+        a = reidentify(t.class_index, z, R);
+        const int card = a ? -1 : at_cardinality(t.class_index);
+        if (card >= 0) {
+          const int lost = claim_lost(card, {{z, R}})[0];
+          if (lost >= 0) a = &anchors_[static_cast<std::size_t>(lost)];
+        }
         if (a) {
           refine_class(model_, *a, t.class_index, t.degree);
         } else {
@@ -252,6 +337,10 @@ void Tracker::life_cycle(double now) {
   const TrackerOptions& o = model_.tracker();
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
+    // A coasting anchor of a class at its cardinality is kept (lost, not
+    // dropped): the object still exists and will be claimed back.
+    const int card = a.status == AnchorStatus::kCoasting ? cardinality_class(a.class_index) : -1;
+    const bool keep_lost = card >= 0 && live_count(card) <= model_.at(card).max_count;
     const double drop_after = c.drop_after > 0.0 ? c.drop_after : o.drop_after;
     const double max_sigma = c.max_sigma > 0.0 ? c.max_sigma : o.max_sigma;
     if (seen_.count(a.id)) {
@@ -262,8 +351,8 @@ void Tracker::life_cycle(double now) {
       const double age = now - a.last_seen;
       if (a.status == AnchorStatus::kTentative && age > o.tentative_timeout) a.status = AnchorStatus::kDropped;
       else if (a.status == AnchorStatus::kConfirmed && age > o.coast_after) a.status = AnchorStatus::kCoasting;
-      if (a.status == AnchorStatus::kCoasting && age > drop_after) a.status = AnchorStatus::kDropped;
-      if (position_sigma_max(a.fused.P) > max_sigma) a.status = AnchorStatus::kDropped;
+      if (!keep_lost && a.status == AnchorStatus::kCoasting && age > drop_after) a.status = AnchorStatus::kDropped;
+      if (!keep_lost && position_sigma_max(a.fused.P) > max_sigma) a.status = AnchorStatus::kDropped;
     }
     if (a.has_local && now - a.local_last_seen > drop_after) {
       a.has_local = false;

@@ -42,6 +42,8 @@ struct ClassDef {
   double drop_after = 0.0;       // s, per-class tracker.drop_after (0 = the tracker's)
   double max_sigma = 0.0;        // m, per-class tracker.max_sigma (0 = the tracker's)
   bool refined_by_teammate_pose = false;  // a Robot becomes this class near a teammate
+  int max_count = 0;             // cardinality: at most this many objects of the class
+                                 // (and its subclasses) exist; 0 = unknown. Not inherited.
 };
 
 struct ClassifierOptions {

@@ -58,6 +58,20 @@ class Tracker {
   /// The coasting anchor (not supported this cycle, compatible class) nearest
   /// to z within tracker.reid_gate (squared Mahalanobis), or null.
   Anchor* reidentify(int class_index, const Vec2& z, const Mat2& R);
+  /// The class with a cardinality (max_count) that `class_index` is or
+  /// descends from, if that class is at its cardinality (as many confirmed
+  /// or coasting anchors as max_count); else -1.
+  int at_cardinality(int class_index) const;
+  int cardinality_class(int class_index) const;  // -1: no cardinality
+  int live_count(int card) const;                // confirmed or coasting anchors of the class
+  /// Observations (z, R) of a class at its cardinality that no live anchor
+  /// takes are the class's lost (coasting) anchors coming back: the global
+  /// minimum-cost assignment (Hungarian) on the negative log-likelihood
+  /// d2 + ln det S with the coasting covariance grown by the motion model,
+  /// no gate. Returns an anchor index per observation, or -1 (more
+  /// observations than lost anchors).
+  std::vector<int> claim_lost(int card_class, const std::vector<std::pair<Vec2, Mat2>>& zs) const;
+  void apply_local(double now, Anchor& a, const Observation& o);
 
   const ConceptualModel& model_;
   Merger merger_;
