@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # README command 2: installs what is missing, builds, builds the tests, runs
 # every gtest and rostest through ctest, checks the workspace with
-# catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), and
-# prints, as its last line, "N passed, M failed" counted over test cases.
+# catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
+# the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
+# libFuzzer target for a bounded time (scripts/sanitize.sh; SANITIZE=0 skips
+# that stage, FUZZ_SECONDS sets the time per target), and prints, as its
+# last line, "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 ensure_setup
@@ -50,6 +53,17 @@ PY
 check_case catkin_lint catkin_lint --strict src
 check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d mrt_*/)
 check_case check_install "$ROOT/scripts/check_install.sh"
+
+# Sanitizers and fuzzing: separate build directories, results counted below
+# (the stage failing on its own, e.g. clang missing, is one failed case).
+set +e
+"$ROOT/scripts/sanitize.sh"
+san_rc=$?
+set -e
+if [ "$san_rc" -ne 0 ]; then
+  /usr/bin/python3 "$ROOT/scripts/junit.py" case "$ROOT/build/test_results/sanitizers/sanitize.xml" \
+    sanitizers sanitize.sh "$san_rc" /dev/null
+fi
 
 # A ctest failure the result files do not show (a test that crashed before
 # writing any) counts as one more failed case.
