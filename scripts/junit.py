@@ -59,12 +59,17 @@ def collect(src, dest, suffix, ctest_junit):
     failed = ctest_failures(ctest_junit)
     for pkg in sorted(os.listdir(src)) if os.path.isdir(src) else []:
         for f in sorted(os.listdir(os.path.join(src, pkg))):
-            if not (f.startswith("gtest-") and f.endswith(".xml")):
+            if not f.endswith(".xml"):
                 continue
-            target = f[len("gtest-"):-len(".xml")]
+            # gtest-<target>.xml, or MISSING-gtest-<target>.xml (a failure
+            # catkin writes when the binary left no result: not built, or
+            # killed by a sanitizer report).
             out_dir = os.path.join(dest, f"{pkg}_{suffix}")
             os.makedirs(out_dir, exist_ok=True)
             shutil.copy(os.path.join(src, pkg, f), os.path.join(out_dir, f))
+            if not f.startswith("gtest-"):
+                continue
+            target = f[len("gtest-"):-len(".xml")]
             ctest_name = f"_ctest_{pkg}_gtest_{target}"
             if ctest_name in failed and not has_failure(os.path.join(src, pkg, f)):
                 write_case(os.path.join(out_dir, f"exit-{target}.xml"), f"{pkg}_{suffix}",

@@ -17,6 +17,9 @@
 # The normal build (build/, devel/) is not touched: demo.sh and
 # check_install.sh keep using uninstrumented programs. Each sanitizer build
 # directory is configured once; make re-runs cmake when a CMakeLists changes.
+#   scripts/sanitize.sh [build|run|fuzz]  both phases by default (fuzz: only
+#                                     the fuzzers); test.sh starts
+#                                     `build` early in the background (nice 19)
 # SANITIZE=0 skips the whole stage.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -33,14 +36,15 @@ san_configure() {
   local build=$1 devel=$2 flags=$3
   shift 3
   [ -f "$build/CMakeCache.txt" ] && return 0
+  mkdir -p "$build"
   cmake -S "$ROOT/src" -B "$build" "${CATKIN_ARGS[@]}" \
     -DCMAKE_C_COMPILER="${CLANG:-clang}" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" \
     -DCATKIN_DEVEL_PREFIX="$devel" -DCMAKE_INSTALL_PREFIX="$build/install" \
     -DCMAKE_BUILD_TYPE=Sanitize \
     -DCMAKE_C_FLAGS_SANITIZE="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
     -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
-    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" "$@" >"$build.configure.log" 2>&1 \
-    || { cat "$build.configure.log" >&2; return 1; }
+    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" "$@" >"$build/configure.log" 2>&1 \
+    || { cat "$build/configure.log" >&2; return 1; }
 }
 
 # gtest_targets BUILD_DIR REGEX: the gtest targets ctest knows, matching REGEX.
@@ -49,17 +53,19 @@ gtest_targets() {
 }
 
 # san_build BUILD_DIR NAME TARGETS...: builds the targets (make -k, so one
-# broken target does not hide the others); a failed build is one failed case.
+# broken target does not hide the others); a failed build is one failed case
+# (BUILD_DIR/NAME.xml, copied to the results by the run phase).
 san_build() {
   local build=$1 name=$2 rc
   shift 2
+  rm -f "$build/$name.xml"
   set +e
   make -C "$build" -k -j"$JOBS" "$@" >"$build/make.log" 2>&1
   rc=$?
   set -e
   if [ "$rc" -ne 0 ]; then
     grep -E -B2 -A6 'error|Error' "$build/make.log" | tail -60 >&2
-    "$PY" "$JUNIT" case "$RESULTS/sanitizers/$name.xml" sanitizers "$name" "$rc" "$build/make.log"
+    "$PY" "$JUNIT" case "$build/$name.xml" sanitizers "$name" "$rc" "$build/make.log"
   fi
 }
 
@@ -117,24 +123,43 @@ run_fuzzers() {
   wait
 }
 
+build_phase() {
+  local targets fuzz
+  # ASan + UBSan: the gtests and the fuzz targets, one build.
+  san_configure "$ROOT/build_san" "$ROOT/devel_san" "-fsanitize=address,undefined -fno-sanitize-recover=all"
+  mapfile -t targets < <(gtest_targets "$ROOT/build_san" _gtest_)
+  mapfile -t fuzz < <(sed -n 's/^\([a-z_]*fuzz_[a-z_]*\) .*/\1/p' "$ROOT/scripts/fuzz_targets.txt")
+  echo "== sanitizers: building ${#targets[@]} gtests and ${#fuzz[@]} fuzz targets with ASan+UBSan (build_san)"
+  san_build "$ROOT/build_san" asan_build "${targets[@]}" "${fuzz[@]}"
+  # TSan: the DCDT suite.
+  san_configure "$ROOT/build_tsan" "$ROOT/devel_tsan" "-fsanitize=thread" "-DCATKIN_WHITELIST_PACKAGES=mrt_common;mrt_dcdt"
+  mapfile -t targets < <(gtest_targets "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_)
+  echo "== sanitizers: building ${#targets[@]} mrt_dcdt gtests with TSan (build_tsan)"
+  san_build "$ROOT/build_tsan" tsan_build "${targets[@]}"
+}
+
+run_phase() {
+  local f
+  mkdir -p "$RESULTS/sanitizers"
+  for f in "$ROOT/build_san/asan_build.xml" "$ROOT/build_tsan/tsan_build.xml"; do
+    if [ -f "$f" ]; then cp "$f" "$RESULTS/sanitizers/"; fi
+  done
+  echo "== sanitizers: gtests under ASan+UBSan"
+  san_gtests "$ROOT/build_san" _gtest_ asan
+  echo "== fuzzing: $(grep -c '^[a-z]' "$ROOT/scripts/fuzz_targets.txt") targets, ${FUZZ_SECONDS} s each, $JOBS at a time"
+  run_fuzzers
+  echo "== sanitizers: mrt_dcdt gtests under TSan"
+  san_gtests "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_ tsan
+}
+
 if [ "${SANITIZE:-1}" = 0 ]; then exit 0; fi
-mkdir -p "$RESULTS"
-
-# ASan + UBSan: the gtests and the fuzz targets, one build.
-san_configure "$ROOT/build_san" "$ROOT/devel_san" "-fsanitize=address,undefined -fno-sanitize-recover=all"
-mapfile -t targets < <(gtest_targets "$ROOT/build_san" _gtest_)
-mapfile -t fuzz < <(sed -n 's/^\([a-z_]*fuzz_[a-z_]*\) .*/\1/p' "$ROOT/scripts/fuzz_targets.txt")
-echo "== sanitizers: building ${#targets[@]} gtests and ${#fuzz[@]} fuzz targets with ASan+UBSan (build_san)"
-san_build "$ROOT/build_san" asan_build "${targets[@]}" "${fuzz[@]}"
-echo "== sanitizers: gtests under ASan+UBSan"
-san_gtests "$ROOT/build_san" _gtest_ asan
-echo "== fuzzing: ${#fuzz[@]} targets, ${FUZZ_SECONDS} s each, $JOBS at a time"
-run_fuzzers
-
-# TSan: the DCDT suite.
-san_configure "$ROOT/build_tsan" "$ROOT/devel_tsan" "-fsanitize=thread" "-DCATKIN_WHITELIST_PACKAGES=mrt_common;mrt_dcdt"
-mapfile -t targets < <(gtest_targets "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_)
-echo "== sanitizers: building ${#targets[@]} mrt_dcdt gtests with TSan (build_tsan)"
-san_build "$ROOT/build_tsan" tsan_build "${targets[@]}"
-echo "== sanitizers: mrt_dcdt gtests under TSan"
-san_gtests "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_ tsan
+case "${1:-all}" in
+  build) build_phase ;;
+  run) run_phase ;;
+  fuzz) run_fuzzers ;;
+  all)
+    build_phase
+    run_phase
+    ;;
+  *) echo "usage: scripts/sanitize.sh [build|run|fuzz]" >&2; exit 2 ;;
+esac
