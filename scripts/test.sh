@@ -21,7 +21,9 @@ setsid nice -n 19 "$ROOT/scripts/sanitize.sh" build >"$ROOT/build_san.log" 2>&1 
 san_pid=$!
 trap 'kill -- -$san_pid 2>/dev/null || true' EXIT
 
-build_workspace
+# The libFuzzer programs come from build_san: the main build skips its own
+# clang++ sub-builds of mrt_brian's and mrt_dcdt's (the same programs).
+build_workspace -DMRT_BRIAN_FUZZ=OFF -DMRT_DCDT_FUZZ=OFF
 # --force-cmake: catkin caches the test environment (PYTHONPATH,
 # LD_LIBRARY_PATH) when it configures, and keeps only devel directories
 # that exist then; on a fresh clone devel/lib/python3/dist-packages (the
