@@ -31,12 +31,14 @@ export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 
-# san_configure BUILD_DIR DEVEL_DIR SANITIZER_FLAGS [CMAKE_ARGS...]
+# san_configure BUILD_DIR DEVEL_DIR SANITIZER_FLAGS [CMAKE_ARGS...]: once;
+# touches BUILD_DIR/.fresh when it configured (see san_build).
 san_configure() {
   local build=$1 devel=$2 flags=$3
   shift 3
   [ -f "$build/CMakeCache.txt" ] && return 0
   mkdir -p "$build"
+  touch "$build/.fresh"
   cmake -S "$ROOT/src" -B "$build" "${CATKIN_ARGS[@]}" \
     -DCMAKE_C_COMPILER="${CLANG:-clang}" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" \
     -DCATKIN_DEVEL_PREFIX="$devel" -DCMAKE_INSTALL_PREFIX="$build/install" \
@@ -63,6 +65,13 @@ san_build() {
   make -C "$build" -k -j"$JOBS" "$@" >"$build/make.log" 2>&1
   rc=$?
   set -e
+  # As in test.sh (--force-cmake): catkin caches the test environment when
+  # it configures, keeping only the devel directories that exist then; after
+  # the first build the generated mrt_msgs Python exists.
+  if [ -f "$build/.fresh" ]; then
+    cmake "$build" >>"$build/make.log" 2>&1 || rc=1
+    rm -f "$build/.fresh"
+  fi
   if [ "$rc" -ne 0 ]; then
     grep -E -B2 -A6 'error|Error' "$build/make.log" | tail -60 >&2
     "$PY" "$JUNIT" case "$build/$name.xml" sanitizers "$name" "$rc" "$build/make.log"
@@ -130,7 +139,7 @@ build_phase() {
   mapfile -t targets < <(gtest_targets "$ROOT/build_san" _gtest_)
   mapfile -t fuzz < <(sed -n 's/^\([a-z_]*fuzz_[a-z_]*\) .*/\1/p' "$ROOT/scripts/fuzz_targets.txt")
   echo "== sanitizers: building ${#targets[@]} gtests and ${#fuzz[@]} fuzz targets with ASan+UBSan (build_san)"
-  san_build "$ROOT/build_san" asan_build "${targets[@]}" "${fuzz[@]}"
+  san_build "$ROOT/build_san" asan_build "${fuzz[@]}" "${targets[@]}"
   # TSan: the DCDT suite.
   san_configure "$ROOT/build_tsan" "$ROOT/devel_tsan" "-fsanitize=thread" "-DCATKIN_WHITELIST_PACKAGES=mrt_common;mrt_dcdt"
   mapfile -t targets < <(gtest_targets "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_)
