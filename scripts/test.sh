@@ -1,21 +1,37 @@
 #!/usr/bin/env bash
 # README command 2: installs what is missing, builds, builds the tests, runs
 # every gtest and rostest through ctest, checks the workspace with
-# catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), and
-# prints, as its last line, "N passed, M failed" counted over test cases.
+# catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
+# the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
+# libFuzzer target for a bounded time (scripts/sanitize.sh; SANITIZE=0 skips
+# that stage, FUZZ_SECONDS sets the time per target), and prints, as its
+# last line, "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 ensure_setup
-build_workspace
+# Clean results for this run (the sanitizer stage writes there too).
+rm -rf "$ROOT/build/test_results"
+
+# The sanitizer builds (scripts/sanitize.sh build: build_san, build_tsan)
+# start now in the background at the lowest priority (nice 19), so they use
+# only the CPU time the main build and the tests leave idle and do not
+# disturb the tests' timing; their tests run after the checks below. Its
+# own process group, ended with this script.
+setsid nice -n 19 "$ROOT/scripts/sanitize.sh" build >"$ROOT/build_san.log" 2>&1 &
+san_pid=$!
+trap 'kill -- -$san_pid 2>/dev/null || true' EXIT
+
+# The libFuzzer programs come from build_san: the main build skips its own
+# clang++ sub-builds of mrt_brian's and mrt_dcdt's (the same programs).
+build_workspace -DMRT_BRIAN_FUZZ=OFF -DMRT_DCDT_FUZZ=OFF
 # --force-cmake: catkin caches the test environment (PYTHONPATH,
 # LD_LIBRARY_PATH) when it configures, and keeps only devel directories
 # that exist then; on a fresh clone devel/lib/python3/dist-packages (the
 # generated mrt_msgs Python) exists only after the first build.
 build_workspace --force-cmake tests
 
-# Each run gets its own ROS master port and clean results.
+# Each run gets its own ROS master port.
 export ROS_MASTER_URI="http://127.0.0.1:$(free_port)"
-rm -rf "$ROOT/build/test_results"
 cd "$ROOT/build"
 set +e
 ctest --output-on-failure -j1 "$@"
@@ -50,6 +66,22 @@ PY
 check_case catkin_lint catkin_lint --strict src
 check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d mrt_*/)
 check_case check_install "$ROOT/scripts/check_install.sh"
+
+# Sanitizers and fuzzing: waits for the background build, then runs the
+# sanitized gtests and the fuzzers (results counted below; the stage failing
+# on its own, e.g. clang missing, is one failed case).
+set +e
+echo "== waiting for the sanitizer builds (log: build_san.log)"
+wait "$san_pid"
+san_rc=$?
+cat "$ROOT/build_san.log"
+[ "$san_rc" -ne 0 ] || "$ROOT/scripts/sanitize.sh" run
+san_rc=$((san_rc + $?))
+set -e
+if [ "$san_rc" -ne 0 ]; then
+  /usr/bin/python3 "$ROOT/scripts/junit.py" case "$ROOT/build/test_results/sanitizers/sanitize.xml" \
+    sanitizers sanitize.sh "$san_rc" /dev/null
+fi
 
 # A ctest failure the result files do not show (a test that crashed before
 # writing any) counts as one more failed case.

@@ -107,7 +107,8 @@ ActivitySpec parse_activity(const YamlReader& y, const YAML::Node& n, ActivitySe
   if (a.schema) {
     y.map(n, "activity", {"name", "opportunity", "priority", "roles"});
     a.name = y.string(n, "name", "", true, "activity");
-    for (const YAML::Node& r : y.sequence(n["roles"], "roles")) {
+    const YAML::Node roles = n["roles"];  // named: sequence() returns its argument
+    for (const YAML::Node& r : y.sequence(roles, "roles")) {
       a.roles.push_back(parse_role(y, r, "role", false));
       for (std::size_t i = 0; i + 1 < a.roles.size(); ++i)
         if (a.roles[i].name == a.roles.back().name) y.fail(r, "duplicate role '" + a.roles.back().name + "'");

@@ -110,7 +110,10 @@ TaskLibrary parse_task_library(const std::string& text, const std::string& file)
       if (!it->second.IsSequence() || it->second.size() == 0)
         y.fail(it->second, "expected a non-empty list of tasks for job '" + name + "'");
       std::vector<std::string>& list = lib.jobs[name];
-      for (const auto& t : it->second) {
+      // A copy: the range of a for over it->second would live in the
+      // iterator's temporary proxy (ASan: stack-use-after-scope).
+      const YAML::Node tasks = it->second;
+      for (const auto& t : tasks) {
         list.push_back(y.string(t, "task"));
         if (!lib.tasks.count(list.back())) y.fail(t, "unknown task '" + list.back() + "' in job '" + name + "'");
       }

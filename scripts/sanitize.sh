@@ -1,0 +1,174 @@
+#!/usr/bin/env bash
+# The sanitizer and fuzzing stage of scripts/test.sh (issue 19). Its results
+# go to build/test_results beside the others, so count_results.py counts
+# them in the final "N passed, M failed":
+#  * build_san/ (devel space devel_san/): the workspace configured with
+#    clang++ and -fsanitize=address,undefined -fno-sanitize-recover=all (any
+#    ASan or UBSan report ends the program with an error; LeakSanitizer on).
+#    Only the gtest targets and the libFuzzer targets are built. Every gtest
+#    binary runs through ctest; its cases are counted again as <pkg>_asan/.
+#  * every libFuzzer target of scripts/fuzz_targets.txt runs FUZZ_SECONDS
+#    (default 30) from its seed corpus, JOBS at a time, each one test case
+#    (<pkg>_fuzz/): a crash, a sanitizer report, a leak, an input slower
+#    than 25 s or over 2 GiB fails it; the report and the reproducer are in
+#    build_san/fuzz/<target>/.
+#  * build_tsan/ (devel_tsan/): mrt_common and mrt_dcdt only, with
+#    -fsanitize=thread; the mrt_dcdt gtests counted as mrt_dcdt_tsan/.
+# The normal build (build/, devel/) is not touched: demo.sh and
+# check_install.sh keep using uninstrumented programs. Each sanitizer build
+# directory is configured once; make re-runs cmake when a CMakeLists changes.
+#   scripts/sanitize.sh [build|run|fuzz]  both phases by default (fuzz: only
+#                                     the fuzzers); test.sh starts
+#                                     `build` early in the background (nice 19)
+# SANITIZE=0 skips the whole stage.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+RESULTS="$ROOT/build/test_results"
+FUZZ_SECONDS="${FUZZ_SECONDS:-30}"
+PY=/usr/bin/python3
+JUNIT="$ROOT/scripts/junit.py"
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+
+# san_configure BUILD_DIR DEVEL_DIR SANITIZER_FLAGS [CMAKE_ARGS...]: once;
+# touches BUILD_DIR/.fresh when it configured (see san_build).
+san_configure() {
+  local build=$1 devel=$2 flags=$3
+  shift 3
+  [ -f "$build/CMakeCache.txt" ] && return 0
+  mkdir -p "$build"
+  touch "$build/.fresh"
+  cmake -S "$ROOT/src" -B "$build" "${CATKIN_ARGS[@]}" \
+    -DCMAKE_C_COMPILER="${CLANG:-clang}" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" \
+    -DCATKIN_DEVEL_PREFIX="$devel" -DCMAKE_INSTALL_PREFIX="$build/install" \
+    -DCMAKE_BUILD_TYPE=Sanitize \
+    -DCMAKE_C_FLAGS_SANITIZE="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
+    -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" "$@" >"$build/configure.log" 2>&1 \
+    || { cat "$build/configure.log" >&2; return 1; }
+}
+
+# gtest_targets BUILD_DIR REGEX: the gtest targets ctest knows, matching REGEX.
+gtest_targets() {
+  (cd "$1" && ctest -N -R "$2") | sed -n 's/.*Test *#[0-9]*: _ctest_.*_gtest_//p'
+}
+
+# san_build BUILD_DIR NAME TARGETS...: builds the targets (make -k, so one
+# broken target does not hide the others); a failed build is one failed case
+# (BUILD_DIR/NAME.xml, copied to the results by the run phase).
+san_build() {
+  local build=$1 name=$2 rc
+  shift 2
+  rm -f "$build/$name.xml"
+  set +e
+  make -C "$build" -k -j"$JOBS" "$@" >"$build/make.log" 2>&1
+  rc=$?
+  set -e
+  # As in test.sh (--force-cmake): catkin caches the test environment when
+  # it configures, keeping only the devel directories that exist then; after
+  # the first build the generated mrt_msgs Python exists.
+  if [ -f "$build/.fresh" ]; then
+    cmake "$build" >>"$build/make.log" 2>&1 || rc=1
+    rm -f "$build/.fresh"
+  fi
+  if [ "$rc" -ne 0 ]; then
+    grep -E -B2 -A6 'error|Error' "$build/make.log" | tail -60 >&2
+    "$PY" "$JUNIT" case "$build/$name.xml" sanitizers "$name" "$rc" "$build/make.log"
+  fi
+}
+
+# san_gtests BUILD_DIR REGEX SUFFIX: runs the gtests through ctest (the
+# catkin command: environment, working directory, result file) and copies
+# their results to build/test_results/<pkg>_SUFFIX.
+san_gtests() {
+  local build=$1 regex=$2 suffix=$3
+  rm -rf "$build/test_results" "$build/ctest.xml"
+  (cd "$build" && ctest -R "$regex" --output-on-failure -j1 --timeout 600 --output-junit "$build/ctest.xml") || true
+  "$PY" "$JUNIT" collect "$build/test_results" "$RESULTS" "$suffix" "$build/ctest.xml"
+}
+
+# fuzz_one TARGET PACKAGE SEED_DIR...: one bounded libFuzzer run, one case.
+fuzz_one() {
+  local target=$1 pkg=$2 rc d
+  shift 2
+  local bin="$ROOT/devel_san/lib/$pkg/$target" work="$ROOT/build_san/fuzz/$target" seeds=()
+  for d in "$@"; do seeds+=("$ROOT/$d"); done
+  rm -rf "$work"
+  mkdir -p "$work/corpus"
+  set +e
+  if [ -x "$bin" ]; then
+    timeout --kill-after=10 $((FUZZ_SECONDS + 120)) "$bin" -max_total_time="$FUZZ_SECONDS" -timeout=25 \
+      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" "${seeds[@]}" \
+      >"$work/log" 2>&1
+    rc=$?
+  else
+    echo "$bin: not built (see build_san/make.log)" >"$work/log"
+    rc=1
+  fi
+  set -e
+  "$PY" "$JUNIT" case "$RESULTS/${pkg}_fuzz/$target.xml" "${pkg}_fuzz" "$target" "$rc" "$work/log"
+  if [ "$rc" -eq 0 ]; then
+    echo "fuzz $target: ok, $(grep -o 'Done [0-9]* runs in [0-9]* second(s)' "$work/log" | tail -1)," \
+      "$(grep -o 'cov: [0-9]*' "$work/log" | tail -1)"
+  else
+    echo "fuzz $target: FAILED (exit $rc), report and reproducer in $work" >&2
+    tail -40 "$work/log" >&2
+  fi
+}
+
+run_fuzzers() {
+  local target pkg seeds running=0
+  while read -r target pkg seeds; do
+    case "$target" in "" | \#*) continue ;; esac
+    # shellcheck disable=SC2086  # seeds: a list of directories
+    fuzz_one "$target" "$pkg" $seeds &
+    running=$((running + 1))
+    if [ "$running" -ge "$JOBS" ]; then
+      wait -n || true
+      running=$((running - 1))
+    fi
+  done <"$ROOT/scripts/fuzz_targets.txt"
+  wait
+}
+
+build_phase() {
+  local targets fuzz
+  # ASan + UBSan: the gtests and the fuzz targets, one build.
+  san_configure "$ROOT/build_san" "$ROOT/devel_san" "-fsanitize=address,undefined -fno-sanitize-recover=all"
+  mapfile -t targets < <(gtest_targets "$ROOT/build_san" _gtest_)
+  mapfile -t fuzz < <(sed -n 's/^\([a-z_]*fuzz_[a-z_]*\) .*/\1/p' "$ROOT/scripts/fuzz_targets.txt")
+  echo "== sanitizers: building ${#targets[@]} gtests and ${#fuzz[@]} fuzz targets with ASan+UBSan (build_san)"
+  san_build "$ROOT/build_san" asan_build "${fuzz[@]}" "${targets[@]}"
+  # TSan: the DCDT suite.
+  san_configure "$ROOT/build_tsan" "$ROOT/devel_tsan" "-fsanitize=thread" "-DCATKIN_WHITELIST_PACKAGES=mrt_common;mrt_dcdt"
+  mapfile -t targets < <(gtest_targets "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_)
+  echo "== sanitizers: building ${#targets[@]} mrt_dcdt gtests with TSan (build_tsan)"
+  san_build "$ROOT/build_tsan" tsan_build "${targets[@]}"
+}
+
+run_phase() {
+  local f
+  mkdir -p "$RESULTS/sanitizers"
+  for f in "$ROOT/build_san/asan_build.xml" "$ROOT/build_tsan/tsan_build.xml"; do
+    if [ -f "$f" ]; then cp "$f" "$RESULTS/sanitizers/"; fi
+  done
+  echo "== sanitizers: gtests under ASan+UBSan"
+  san_gtests "$ROOT/build_san" _gtest_ asan
+  echo "== fuzzing: $(grep -c '^[a-z]' "$ROOT/scripts/fuzz_targets.txt") targets, ${FUZZ_SECONDS} s each, $JOBS at a time"
+  run_fuzzers
+  echo "== sanitizers: mrt_dcdt gtests under TSan"
+  san_gtests "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_ tsan
+}
+
+if [ "${SANITIZE:-1}" = 0 ]; then exit 0; fi
+case "${1:-all}" in
+  build) build_phase ;;
+  run) run_phase ;;
+  fuzz) run_fuzzers ;;
+  all)
+    build_phase
+    run_phase
+    ;;
+  *) echo "usage: scripts/sanitize.sh [build|run|fuzz]" >&2; exit 2 ;;
+esac
