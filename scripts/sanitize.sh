@@ -20,7 +20,9 @@
 #   scripts/sanitize.sh [build|run|fuzz]  both phases by default (fuzz: only
 #                                     the fuzzers); test.sh starts
 #                                     `build` early in the background (nice 19)
-# SANITIZE=0 skips the whole stage.
+# The stage runs when SANITIZE=1 (test.sh passes it through); it is off by
+# default until its cost on a fresh clone is measured (issue 19 asks for
+# the whole of test.sh under 30 minutes). Run by hand it always runs.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 RESULTS="$ROOT/build/test_results"
@@ -161,7 +163,7 @@ run_phase() {
   san_gtests "$ROOT/build_tsan" _ctest_mrt_dcdt_gtest_ tsan
 }
 
-if [ "${SANITIZE:-1}" = 0 ]; then exit 0; fi
+if [ "${SANITIZE:-1}" = 0 ]; then exit 0; fi  # test.sh sets the default to 0
 case "${1:-all}" in
   build) build_phase ;;
   run) run_phase ;;

@@ -3,12 +3,13 @@
 # every gtest and rostest through ctest, checks the workspace with
 # catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
 # the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
-# libFuzzer target for a bounded time (scripts/sanitize.sh; SANITIZE=0 skips
-# that stage, FUZZ_SECONDS sets the time per target), and prints, as its
+# libFuzzer target for a bounded time (scripts/sanitize.sh; only with
+# SANITIZE=1 for now, FUZZ_SECONDS sets the time per target), and prints, as its
 # last line, "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 ensure_setup
+export SANITIZE="${SANITIZE:-0}"
 # Clean results for this run (the sanitizer stage writes there too).
 rm -rf "$ROOT/build/test_results"
 

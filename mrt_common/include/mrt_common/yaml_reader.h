@@ -206,7 +206,9 @@ class YamlReader {
     return v;
   }
 
-  const YAML::Node& sequence(const YAML::Node& n, const std::string& what) const {
+  /// The list itself, by value (a YAML::Node is a handle): iterating over
+  /// `sequence(map["key"], ...)` must not outlive a temporary.
+  YAML::Node sequence(const YAML::Node& n, const std::string& what) const {
     if (!n.IsSequence()) fail(n, "expected a list for '" + what + "'");
     return n;
   }
