@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <random>
 
@@ -91,10 +90,6 @@ struct Game {
       auto& times = change_times[static_cast<std::size_t>(r)];
       // A flip-flop: back to the slot it left less than 1 s ago.
       flips += !times.empty() && t - times.back() < 1.0 && after == left[static_cast<std::size_t>(r)];
-      if (std::getenv("SCARE_DEBUG") && !times.empty() && t - times.back() < 10.0)
-        std::fprintf(stderr, "robot%d %.3f: %s -> %s (prev change %.3f, want %d waiting %d drops %zu)\n", r, t,
-                     set.slot_name(set.slots()[held]).c_str(), set.slot_name(set.slots()[after]).c_str(), times.back(),
-                     0, 0, c[r].drops());
       times.push_back(t);
       left[static_cast<std::size_t>(r)] = held;
     }

@@ -32,7 +32,12 @@ bool Allocator::dwelling(const RobotView& r) const {
 std::vector<AgendaEntry> Allocator::agenda(const TeamInput& in) const {
   std::vector<AgendaEntry> all;
   for (std::size_t a = 0; a < set_.activities.size(); ++a) {
-    if (!(in.opportunity[a] >= set_.options.min_opportunity)) continue;
+    // An activity below min_opportunity stays on the agenda while it is
+    // still opportune at all and a robot within its dwell holds it.
+    bool kept = false;
+    for (const RobotView& r : in.robots)
+      kept = kept || (dwelling(r) && slots_[static_cast<std::size_t>(r.incumbent)].activity == static_cast<int>(a));
+    if (!(in.opportunity[a] >= set_.options.min_opportunity || (kept && in.opportunity[a] > 0.0))) continue;
     AgendaEntry e;
     e.activity = static_cast<int>(a);
     e.opportunity = in.opportunity[a];

@@ -1,6 +1,6 @@
 // The dwell (options.dwell): a robot that took its slot less than `dwell`
-// ago keeps it against a better robot, but never against cardinality,
-// coverage or a drop-out. Hand-worked numbers in the comments
+// ago keeps it against a better robot (and while its activity is still
+// opportune at all), but never against cardinality, coverage or a drop-out. Hand-worked numbers in the comments
 // (utility = priority * opportunity * attitude / (1 + time / 2), + 0.15
 // for the incumbent).
 #include <gtest/gtest.h>
@@ -153,9 +153,17 @@ TEST(Dwell, CoverageAndTheAgendaBeatTheDwell) {
   // so r1 leaves its role within the dwell: Defense 0.2 * 0.9 = 0.18.
   in.robots.pop_back();
   EXPECT_EQ(slot_of(al.allocate(in), "r1"), 0);
-  // Pass off the agenda (opportunity 0.04 < 0.05): r1 leaves it too.
+  // Pass below min_opportunity (0.04 < 0.05) but still opportune: kept on
+  // the agenda while the dwelling robots hold it, 2 * (2 * 0.04 * 0.8 + 0.15)
+  // = 0.428 (against 0.18 with r1 on Defense; the dwell keeps both anyway).
   in.robots.push_back(robot("r2", {0.9, 0, 0.8, 0.8}, 3, 2.0));
   in.opportunity = {0.2, 0.0, 0.04};
+  a = al.allocate(in);
+  EXPECT_EQ(slot_of(a, "r1"), 2);
+  EXPECT_EQ(slot_of(a, "r2"), 3);
+  EXPECT_NEAR(a.utility, 0.428, 1e-9);
+  // Not opportune at all (0): both leave it, within the dwell.
+  in.opportunity = {0.2, 0.0, 0.0};
   a = al.allocate(in);
   EXPECT_EQ(slot_of(a, "r1"), 0);  // tie on Defense: the lower id
   EXPECT_EQ(slot_of(a, "r2"), -1);
