@@ -205,7 +205,7 @@ int reassignments(const ActivitySet& set, int cycles) {
 
 }  // namespace
 
-void run_game(const ActivitySet& set);  // coordination_game.cpp
+void run_game(const ActivitySet& set, const char* name, bool dropouts);  // coordination_game.cpp
 
 void run_coordination(int situations, int stability_cycles) {
   const ActivitySet set = parse_activities(synthetic_yaml(), "synthetic.yaml");
@@ -216,7 +216,12 @@ void run_coordination(int situations, int stability_cycles) {
   loose.options.hysteresis = 0.0;
   std::printf("coordination_quasi_static_reassignments_without_hysteresis: %d count\n",
               reassignments(loose, stability_cycles));
-  run_game(set);
+  // The game with a 10 s dwell (README), then without it for comparison.
+  ActivitySet dwell = set;
+  dwell.options.dwell = 10.0;
+  std::printf("coordination_game_dwell: %.1f s\n", dwell.options.dwell);
+  run_game(dwell, "coordination_game", true);
+  run_game(set, "coordination_game_without_dwell", false);
 }
 
 }  // namespace mrt::scare::bench

@@ -152,7 +152,7 @@ struct Game {
 
 /// Per robot, the most re-assignments in any 10 s window (sliding), and
 /// the fixed 10 s windows [10k, 10k + 10) of any robot with more than one.
-void print_windows(const Game& g, double duration) {
+void print_windows(const Game& g, double duration, const char* name) {
   std::size_t worst = 0, over = 0, windows = 0;
   for (const auto& times : g.change_times) {
     for (std::size_t i = 0, j = 0; i < times.size(); ++i) {
@@ -164,23 +164,24 @@ void print_windows(const Game& g, double duration) {
   }
   std::size_t busiest = 0;
   for (const auto& times : g.change_times) busiest = std::max(busiest, times.size());
-  std::printf("coordination_game_reassignments_busiest_robot_per_10s: %.3f count\n",
-              static_cast<double>(busiest) / (duration / 10.0));
-  std::printf("coordination_game_reassignments_max_in_any_10s_window: %zu count\n", worst);
-  std::printf("coordination_game_robot_10s_windows_over_one: %zu of %zu count\n", over, windows);
-  std::printf("coordination_game_flip_flops_within_1s: %zu count\n", g.flips);
+  std::printf("%s_reassignments_busiest_robot_per_10s: %.3f count\n",
+              name, static_cast<double>(busiest) / (duration / 10.0));
+  std::printf("%s_reassignments_max_in_any_10s_window: %zu count\n", name, worst);
+  std::printf("%s_robot_10s_windows_over_one: %zu of %zu count\n", name, over, windows);
+  std::printf("%s_flip_flops_within_1s: %zu count\n", name, g.flips);
 }
 
 }  // namespace
 
-void run_game(const ActivitySet& set) {
+void run_game(const ActivitySet& set, const char* name, bool dropouts) {
   const double duration = 600.0;  // s of game
   Game g(set);
   g.run(0, static_cast<long>(duration / kDt));
-  std::printf("coordination_game_cycles_checked: %zu count\n", g.checks);
-  std::printf("coordination_game_consistent_cycles: %.3f %%\n", 100.0 * (1.0 - double(g.conflicts) / double(g.checks)));
-  std::printf("coordination_game_reassignments_per_robot_per_10s: %.3f count\n", g.changes / 5.0 / (duration / 10.0));
-  print_windows(g, duration);
+  std::printf("%s_cycles_checked: %zu count\n", name, g.checks);
+  std::printf("%s_consistent_cycles: %.3f %%\n", name, 100.0 * (1.0 - double(g.conflicts) / double(g.checks)));
+  std::printf("%s_reassignments_per_robot_per_10s: %.3f count\n", name, g.changes / 5.0 / (duration / 10.0));
+  print_windows(g, duration, name);
+  if (!dropouts) return;
   // Drop-outs: 50 trials, each from a game settled for 20 s; the robot
   // holding a schema role if any, else robot4, falls silent.
   int worst = 0, worst_all = 0, failed = 0;

@@ -153,10 +153,11 @@ RobotSpec parse_robot(const YamlReader& y, const YAML::Node& n, const ActivitySe
 
 void parse_options(const YamlReader& y, const YAML::Node& n, AllocationOptions& o) {
   if (!n) return;
-  y.map(n, "options", {"time_scale", "hysteresis", "min_opportunity", "exact_max_robots"});
+  y.map(n, "options", {"time_scale", "hysteresis", "min_opportunity", "exact_max_robots", "dwell"});
   o.time_scale = y.positive(n, "time_scale", o.time_scale);
   o.hysteresis = y.non_negative(n, "hysteresis", o.hysteresis);
   o.min_opportunity = y.fraction(n, "min_opportunity", o.min_opportunity);
+  o.dwell = y.non_negative(n, "dwell", o.dwell);
   if (n["exact_max_robots"]) o.exact_max_robots = static_cast<int>(y.integer(n["exact_max_robots"], "exact_max_robots", 0, 8));
 }
 

@@ -25,10 +25,19 @@ double Allocator::utility(const TeamInput& in, const RobotView& r, int s) const 
   return a.priority * opp * fit(r, s) + (r.incumbent == s ? set_.options.hysteresis : 0.0);
 }
 
+bool Allocator::dwelling(const RobotView& r) const {
+  return set_.options.dwell > 0.0 && r.incumbent >= 0 && r.held < set_.options.dwell;
+}
+
 std::vector<AgendaEntry> Allocator::agenda(const TeamInput& in) const {
   std::vector<AgendaEntry> all;
   for (std::size_t a = 0; a < set_.activities.size(); ++a) {
-    if (!(in.opportunity[a] >= set_.options.min_opportunity)) continue;
+    // An activity below min_opportunity stays on the agenda while it is
+    // still opportune at all and a robot within its dwell holds it.
+    bool kept = false;
+    for (const RobotView& r : in.robots)
+      kept = kept || (dwelling(r) && slots_[static_cast<std::size_t>(r.incumbent)].activity == static_cast<int>(a));
+    if (!(in.opportunity[a] >= set_.options.min_opportunity || (kept && in.opportunity[a] > 0.0))) continue;
     AgendaEntry e;
     e.activity = static_cast<int>(a);
     e.opportunity = in.opportunity[a];
@@ -86,6 +95,19 @@ Allocator::Tables Allocator::tables(const TeamInput& in, const std::vector<Agend
         t.u[static_cast<std::size_t>(i)][static_cast<std::size_t>(s)] =
             utility(in, in.robots[static_cast<std::size_t>(i)], s) +
             eps * (t.n - i) * (nslots - rank[static_cast<std::size_t>(s)]);
+  // Dwell: a robot within its dwell keeps its slot whenever some feasible
+  // allocation lets it. Its slot earns a bonus larger than every robot's
+  // utility together (priority * 1 * 1 + hysteresis each), so the search
+  // first keeps as many dwelling robots as cardinality and coverage allow,
+  // then maximises utility; a slot off the agenda earns nothing.
+  double top = 0.0;
+  for (const ActivitySpec& a : set_.activities) top = std::max(top, a.priority);
+  const double bonus = (t.n + 1) * (top + set_.options.hysteresis + 1.0);
+  for (int i = 0; i < t.n; ++i) {
+    const RobotView& r = in.robots[static_cast<std::size_t>(i)];
+    double& u = t.u[static_cast<std::size_t>(i)][static_cast<std::size_t>(std::max(0, r.incumbent))];
+    if (dwelling(r) && u > kNone) u += bonus;
+  }
   return t;
 }
 

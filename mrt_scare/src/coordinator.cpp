@@ -53,6 +53,7 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
   m.x = pose.x;
   m.y = pose.y;
   m.intention = own_slot_;
+  if (own_slot_ >= 0) m.held = now - since_;
   s.model->evaluate(crisp);
   m.opportunity = s.opportunities();
   RobotView v = robot_view(s, self_, pose, crisp, *cost_);
@@ -78,7 +79,7 @@ bool Coordinator::receive(const CoordinationMessage& m) {
   const auto n = slots_.size();
   bool ok = m.attitude.size() == n && m.time.size() == n && m.opportunity.size() == set().activities.size() &&
             m.intention >= -1 && m.intention < static_cast<int>(n) && std::isfinite(m.stamp) &&
-            std::isfinite(m.x) && std::isfinite(m.y);
+            std::isfinite(m.x) && std::isfinite(m.y) && m.held >= 0.0;
   for (std::size_t i = 0; ok && i < n; ++i)
     ok = m.attitude[i] >= 0.0 && m.attitude[i] <= 1.0 && m.time[i] >= 0.0;  // NaN fails too
   for (std::size_t i = 0; ok && i < m.opportunity.size(); ++i) ok = m.opportunity[i] >= 0.0 && m.opportunity[i] <= 1.0;
@@ -105,6 +106,7 @@ TeamInput Coordinator::team_input(double now) const {
     v.attitude = m.attitude;
     v.time = m.time;
     v.incumbent = m.intention;
+    v.held = m.held + std::max(0.0, now - m.stamp);  // inf stays inf
     v.confidence = id == self_.id ? 1.0 : confidence(std::max(0.0, now - m.stamp));
     in.robots.push_back(std::move(v));
     for (std::size_t a = 0; a < in.opportunity.size(); ++a) in.opportunity[a] += m.opportunity[a];
@@ -115,6 +117,7 @@ TeamInput Coordinator::team_input(double now) const {
 }
 
 Allocation Coordinator::step(double now) {
+  const std::size_t drops_before = drops_;
   for (auto it = team_.begin(); it != team_.end();) {
     // Dropped when neither this robot nor, by their gossip, its teammates
     // have heard it for drop_timeout: survivors whose own copy of its last
@@ -127,7 +130,10 @@ Allocation Coordinator::step(double now) {
       ++it;
     }
   }
-  last_ = allocator_.allocate(team_input(now));
+  TeamInput in = team_input(now);
+  if (drops_ != drops_before)
+    for (RobotView& v : in.robots) v.held = std::numeric_limits<double>::infinity();
+  last_ = allocator_.allocate(std::move(in));
   int want = -1;
   for (std::size_t i = 0; i < last_.robots.size(); ++i)
     if (last_.robots[i] == self_.id) want = last_.slot[i];
@@ -144,6 +150,12 @@ Allocation Coordinator::step(double now) {
     waiting_ = claims >= set().activities[static_cast<std::size_t>(sl.activity)].roles[static_cast<std::size_t>(sl.role)].max;
   }
   own_slot_ = waiting_ ? -1 : want;
+  // The dwell counts from taking a slot other than the last one held (a
+  // wait in between does not restart it when the robot comes back).
+  if (own_slot_ >= 0 && own_slot_ != last_held_) {
+    since_ = now;
+    last_held_ = own_slot_;
+  }
   return last_;
 }
 

@@ -27,6 +27,18 @@ struct Harness {
   std::map<std::string, double> world;
   const std::array<std::array<double, 2>, 3> poses{{{0.0, 1.0}, {1.0, 0.5}, {2.5, -2.0}}};
   ros::Timer timer;
+  // robot2 on the team topic: the stamp of its first message as passer, and
+  // the intention_since of its first and latest such messages.
+  double passer_first_stamp = -1.0, passer_first_since = -1.0, passer_last_since = -1.0;
+  ros::Subscriber team_sub = nh.subscribe<mrt_msgs::CoordinationParameters>(
+      "/scare/team", 50, [this](const mrt_msgs::CoordinationParameters::ConstPtr& m) {
+        if (m->robot_id != "robot2" || m->intention != "PassageToMate.passer") return;
+        if (passer_first_stamp < 0.0) {
+          passer_first_stamp = m->header.stamp.toSec();
+          passer_first_since = m->intention_since;
+        }
+        passer_last_since = m->intention_since;
+      });
 
   Harness() {
     for (int i = 0; i < 3; ++i) {
@@ -104,6 +116,13 @@ TEST(Coordination, AllocateThenReallocateWhenARobotStops) {
   EXPECT_EQ(h.job[1], "PassageToMate.passer");
   EXPECT_EQ(h.job[2], "PassageToMate.receiver");
   EXPECT_TRUE(stable_for([&] { return h.jobs() == pass; }, 1.0));  // no flip-flop
+  // The dwell's clock on the wire: robot2 took the passer role in the step
+  // of the cycle before it first announced it (a 0.1 s cycle earlier, same
+  // clock), and the time stays the same while it holds the role.
+  ASSERT_GT(h.passer_first_stamp, 0.0);
+  EXPECT_LT(h.passer_first_since, h.passer_first_stamp);
+  EXPECT_GT(h.passer_first_since, h.passer_first_stamp - 0.25);
+  EXPECT_DOUBLE_EQ(h.passer_last_since, h.passer_first_since);
 
   // robot3 stops: silent, it is dropped after 1 s and its role filled again.
   std_msgs::Bool off;

@@ -56,6 +56,9 @@ struct AllocationOptions {
   double hysteresis = 0.15;      // utility margin the incumbent keeps its role by
   double min_opportunity = 0.05; // activities below it are not on the agenda
   int exact_max_robots = 6;      // exact DP up to this team size, else greedy + local search
+  /// s: a robot that took its slot less than `dwell` ago keeps it unless
+  /// cardinality or coverage cannot be met otherwise (0: no dwell).
+  double dwell = 0.0;
 };
 
 /// One (activity, role) pair: what a robot is assigned to.

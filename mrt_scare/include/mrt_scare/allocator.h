@@ -3,6 +3,7 @@
 // deterministic tie-breaks). ROS-free; the rules are in the README.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct RobotView {
   std::vector<double> time;      // per slot: s to reach the role's target (inf: unreachable)
   int incumbent = -1;            // the slot it executes now (its intention), -1 none
   double confidence = 1.0;       // (0, 1]: the age penalty of stale data
+  /// s since it took its incumbent slot (inf: unknown or long ago); below
+  /// the options' `dwell` it keeps that slot unless cardinality or
+  /// coverage cannot be met otherwise.
+  double held = std::numeric_limits<double>::infinity();
 };
 
 /// One cycle's input: opportunities per activity (degrees in [0, 1]) and
@@ -58,6 +63,9 @@ class Allocator {
   /// Utility of robot r (sorted index) in slot s given the agenda's
   /// opportunities, with the incumbent's hysteresis bonus; no tie-break term.
   double utility(const TeamInput& in, const RobotView& r, int s) const;
+  /// Robot r is within its dwell: it holds a slot taken less than
+  /// options.dwell ago.
+  bool dwelling(const RobotView& r) const;
   /// Cardinality and coverage of a full assignment (slot per robot, -1 none),
   /// only agenda activities allowed.
   bool feasible(const std::vector<int>& slot, const std::vector<char>& on_agenda) const;

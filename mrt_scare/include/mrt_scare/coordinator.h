@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -48,6 +49,8 @@ struct CoordinationMessage {
   bool leaving = false;
   double x = 0.0, y = 0.0;           // its position (m), for teammates' coordination parameters
   int intention = -1;                // the slot it executes, -1 none
+  /// s it has held its intention at `stamp` (inf: unknown), for the dwell.
+  double held = std::numeric_limits<double>::infinity();
   std::vector<double> attitude;      // per slot
   std::vector<double> time;          // per slot, s (inf: target unknown)
   std::vector<double> opportunity;   // per activity, its own estimate
@@ -89,7 +92,9 @@ class Coordinator {
   bool receive(const CoordinationMessage& m);
   /// Drops teammates silent for drop_timeout, allocates, and adopts its own
   /// slot, unless teammates still claim it (release before acquire: then it
-  /// holds none, waiting(), until they announce they left it).
+  /// holds none, waiting(), until they announce they left it). In a cycle
+  /// in which it drops a teammate, nobody's dwell holds (a drop-out is
+  /// re-assigned at once).
   Allocation step(double now);
   /// The sequencer handed the job `slot` back (a task's `hand_back`): this
   /// robot leaves it at once (intention none) and publishes attitude 0 for
@@ -103,6 +108,8 @@ class Coordinator {
 
   const std::string& id() const { return self_.id; }
   int own_slot() const { return own_slot_; }
+  /// When it took its current slot (s, its clock), -1 none.
+  double own_since() const { return own_slot_ >= 0 ? since_ : -1.0; }
   /// The allocation gave this robot a slot teammates still claim.
   bool waiting() const { return waiting_; }
   const Allocation& last() const { return last_; }
@@ -125,6 +132,8 @@ class Coordinator {
   std::map<std::string, CoordinationMessage> team_;  // by id, own entry included
   std::uint32_t seq_ = 0;
   int own_slot_ = -1;
+  int last_held_ = -1;  // the last slot it held (through waits)
+  double since_ = 0.0;  // when it took the slot it holds or last held
   bool waiting_ = false;
   double started_ = -1.0;  // time of the first publish
   std::size_t drops_ = 0;

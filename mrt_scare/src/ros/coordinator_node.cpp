@@ -14,8 +14,9 @@
 
 #include <ros/callback_queue.h>
 
-#include <cmath>
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <limits>
 #include <memory>
@@ -187,6 +188,9 @@ class CoordinatorNode {
     c.x = m.x;
     c.y = m.y;
     c.intention = m.intention.empty() ? -1 : coord_.set().find_slot(m.intention);
+    // Unknown (0, e.g. from a relay that does not carry it): no dwell.
+    c.held = m.intention_since > 0.0 ? std::max(0.0, c.stamp - m.intention_since)
+                                     : std::numeric_limits<double>::infinity();
     bool ok = c.leaving || ((m.intention.empty() || c.intention >= 0) && m.slots.size() == slots_.size() &&
                             m.activities.size() == coord_.set().activities.size());
     for (std::size_t i = 0; ok && !c.leaving && i < slots_.size(); ++i)
@@ -214,6 +218,7 @@ class CoordinatorNode {
     m.x = c.x;
     m.y = c.y;
     m.intention = c.intention >= 0 ? coord_.set().slot_name(slots_[static_cast<std::size_t>(c.intention)]) : "";
+    m.intention_since = std::isfinite(c.held) ? now.toSec() - c.held : 0.0;
     for (const Slot& s : slots_) m.slots.push_back(coord_.set().slot_name(s));
     for (const auto& a : coord_.set().activities) m.activities.push_back(a.name);
     m.attitude = c.attitude;
