@@ -68,6 +68,7 @@ mrt_msgs::CoordinationParameters SampleCoordination() {
   c.x = 2.5;
   c.y = -2.0;
   c.intention = "PassageToMate.receiver";
+  c.intention_since = 1763775990.125;
   c.slots = {"Defense", "PassageToMate.passer", "PassageToMate.receiver"};
   c.attitude = {0.5, 0.0, 1.0};
   c.time = {7.566, -1.0, 0.41666666666666669};
@@ -101,6 +102,7 @@ TEST(TeamConversions, CoordinationRoundTripThroughXmlTextIsExact) {
   EXPECT_TRUE(d == c);
   EXPECT_TRUE(d.leaving);
   EXPECT_EQ(d.intention, "");
+  EXPECT_EQ(d.intention_since, 0.0);  // absent in the XML: unknown
 }
 
 TEST(TeamConversions, DocumentedWorldModelDecodesToTheValuesWritten) {

@@ -56,6 +56,10 @@ class Attributes {
     if (v != 0.0 && v != 1.0) fail("attribute '" + name + "' must be 0 or 1");
     return v == 1.0;
   }
+  /// Optional number (`fallback` when absent).
+  double number_or(const std::string& name, double fallback) {
+    return find(name) ? number(name) : fallback;
+  }
   /// Optional symbol ("" when absent).
   std::string symbol(const std::string& name) {
     const XmlAttribute* a = find(name);
@@ -224,6 +228,7 @@ XmlMessage from_coordination(const mrt_msgs::CoordinationParameters& c) {
   self.attributes.push_back(num("x", c.x));
   self.attributes.push_back(num("y", c.y));
   if (!c.intention.empty()) self.attributes.push_back(sym("intention", c.intention));
+  if (c.intention_since != 0.0) self.attributes.push_back(num("intention_since", c.intention_since));
   x.objects.push_back(std::move(self));
   for (std::size_t i = 0; i < c.slots.size(); ++i)
     x.objects.push_back({c.slots[i], "Slot", {num("attitude", c.attitude[i]), num("time", c.time[i])}});
@@ -250,6 +255,7 @@ mrt_msgs::CoordinationParameters to_coordination(const XmlMessage& x) {
       c.x = at.number("x");
       c.y = at.number("y");
       c.intention = at.symbol("intention");
+      c.intention_since = at.number_or("intention_since", 0.0);  // 0: unknown (legacy senders)
     } else if (o.membership_class == "Slot") {
       c.slots.push_back(o.name);
       c.attitude.push_back(at.number("attitude"));
