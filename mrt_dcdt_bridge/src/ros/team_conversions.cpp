@@ -58,7 +58,10 @@ class Attributes {
   }
   /// Optional number (`fallback` when absent).
   double number_or(const std::string& name, double fallback) {
-    return find(name) ? number(name) : fallback;
+    const XmlAttribute* a = find(name);  // marks it used
+    if (!a) return fallback;
+    if (!a->symbol.empty()) fail("attribute '" + name + "' must be numeric");
+    return a->value;
   }
   /// Optional symbol ("" when absent).
   std::string symbol(const std::string& name) {
