@@ -159,6 +159,12 @@ class Worlds(unittest.TestCase):
         self.assertEqual(len(w.posts), 1)
         self.assertEqual(len(w.movers[0][0]), 2)
 
+    def test_colour_names_outside_matplotlib(self):
+        # World files name colours for the camera ("bronze" in the museum).
+        self.assertEqual(plots.colour("orange"), "orange")
+        self.assertEqual(plots.colour("bronze"), "#cd7f32")
+        self.assertEqual(plots.colour("no-such-colour"), "0.5")
+
     def test_bad_world_names_the_file(self):
         path = os.path.join(HERE, "data", "bad_world.yaml")
         with self.assertRaises(WorldError) as e:

@@ -45,18 +45,29 @@ def pose_errors(estimate, truth):
     return te, np.hypot(ex - tx, ey - ty), wrap(eyaw - tyaw)
 
 
+# Colour names the worlds use for the camera that matplotlib does not know.
+_EXTRA_COLOURS = {"bronze": "#cd7f32"}
+
+
+def colour(name):
+    """A matplotlib colour for a world file's colour name (grey if unknown)."""
+    if matplotlib.colors.is_color_like(name):
+        return name
+    return _EXTRA_COLOURS.get(name, "0.5")
+
+
 def _draw_world(ax, world):
     for x1, y1, x2, y2 in world.lines:
         ax.plot([x1, x2], [y1, y2], color="0.75", lw=1, zorder=1)
     for i, (x1, y1, x2, y2) in enumerate(world.walls):
         ax.plot([x1, x2], [y1, y2], color="black", lw=2, zorder=2, label="walls" if i == 0 else None)
-    for x, y, r, colour, _ in world.posts:
-        ax.add_patch(plt.Circle((x, y), r, facecolor=colour, edgecolor="black", lw=0.5, zorder=3))
-    for x, y, colour, _ in world.goals:
-        ax.plot([x], [y], marker="s", ms=8, color=colour, markeredgecolor="black", zorder=3)
-    for i, (xs, ys, colour, _) in enumerate(world.movers):
+    for x, y, r, c, _ in world.posts:
+        ax.add_patch(plt.Circle((x, y), r, facecolor=colour(c), edgecolor="black", lw=0.5, zorder=3))
+    for x, y, c, _ in world.goals:
+        ax.plot([x], [y], marker="s", ms=8, color=colour(c), markeredgecolor="black", zorder=3)
+    for i, (xs, ys, c, _) in enumerate(world.movers):
         if xs:
-            ax.plot(xs + xs[:1], ys + ys[:1], ls=":", color=colour, lw=1, zorder=1,
+            ax.plot(xs + xs[:1], ys + ys[:1], ls=":", color=colour(c), lw=1, zorder=1,
                     label="movers' waypoints" if i == 0 else None)
 
 
