@@ -6,7 +6,10 @@ For brian, sonar_crisp and brian_cmd_vel in turn: once the robot drives
 (speed < 0.05 m/s within 5 s of sim time: the simulator's 0.5 s command
 timeout, as the AIRBoard's watchdog on the robot), then drive again once
 roslaunch has respawned the node (within 30 s of sim time), and the route
-must be completed (all 6 points, no task failed).
+must be completed (all 6 points). A stop can outlast a leg's timeout
+(15 s + 4 s per metre, mrt_roby/config/tasks.yaml): the task then fails and
+the sequencer re-plans from where the robot stands, as designed; so at most
+one failed task per kill, each followed by a re-plan, and never `gave_up`.
 """
 import sys
 import time
@@ -61,8 +64,10 @@ class Respawn(unittest.TestCase):
             self.assertTrue(self.wait_sim(lambda: self.speed > 0.15, 30.0),
                             'the robot did not resume after %s was respawned' % node)
         self.assertTrue(self.wait_sim(lambda: 'route_completed' in self.events, 220.0), 'route not completed')
-        failed = [e for e in self.events if e == 'task_failed']
-        self.assertEqual(failed, [], 'tasks failed: %s' % failed)
+        failed = self.events.count('task_failed')
+        self.assertLessEqual(failed, 3, 'tasks failed: %d (events %s)' % (failed, self.events))
+        self.assertGreaterEqual(self.events.count('replan_requested'), failed, 'a failed task was not re-planned')
+        self.assertNotIn('gave_up', self.events)
         rospy.loginfo('respawn: events %s', sorted(set(self.events)))
 
 
