@@ -255,11 +255,7 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
               on_target, on_ramp, decreases, zero, restarts, restarts_at_target, last.board_frames_bad,
               static_cast<unsigned long>(last.frames_good),
               static_cast<unsigned long>(last.frames_bad), last.watchdog_trips, dist);
-  // Liveness: some commands get through. With CRC-32-checked commands (19
-  // bytes for two motors) only 0.9^19 = 13.5 % arrive intact at 10 % byte
-  // corruption, so with corruption both ways the watchdog stops the wheels
-  // about as often as they are on target (78 on target vs 100 stopped in
-  // one fresh-clone run, more on target in two others): not an ordering.
+  // Liveness only: checked 19-byte commands survive 0.9^19 = 13.5 % (README).
   EXPECT_GT(on_target, 0u);
   // After a watchdog trip the ramp restarts from 0: the board's first
   // set-point is a ramp step, unless the command it applies was already on its
