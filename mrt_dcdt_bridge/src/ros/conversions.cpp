@@ -4,13 +4,12 @@
 
 namespace mrt::dcdt::ros_conv {
 
-namespace {
 void stamp_to(const std_msgs::Header& h, XmlMessage* x) {
   x->sec = h.stamp.sec;
   x->nsec = h.stamp.nsec;
   x->frame = h.frame_id;
 }
-// ROS time is unsigned 32-bit seconds: anything else is refused, not wrapped.
+
 void stamp_from(const XmlMessage& x, std_msgs::Header* h) {
   if (x.sec < 0 || x.sec > static_cast<int64_t>(UINT32_MAX))
     throw XmlError(0, "time stamp " + std::to_string(x.sec) + " s is outside the ROS time range [0, 4294967295] s");
@@ -18,6 +17,8 @@ void stamp_from(const XmlMessage& x, std_msgs::Header* h) {
   h->stamp.nsec = x.nsec;
   h->frame_id = x.frame;
 }
+
+namespace {
 const XmlAttribute& value_of(const XmlObject& o, const char* cls) {
   if (o.membership_class != cls || o.attributes.size() != 1 || o.attributes[0].name != "value" ||
       !o.attributes[0].symbol.empty())

@@ -10,6 +10,12 @@
 
 namespace mrt::dcdt::ros_conv {
 
+/// The header's stamp and frame into the XML message's time and frame.
+void stamp_to(const std_msgs::Header& h, XmlMessage* x);
+/// Back; ROS time is unsigned 32-bit seconds: anything else throws
+/// XmlError, it is not wrapped.
+void stamp_from(const XmlMessage& x, std_msgs::Header* h);
+
 XmlMessage from_percept(const mrt_msgs::Percept& p);
 mrt_msgs::Percept to_percept(const XmlMessage& x);
 

@@ -1,5 +1,7 @@
 #include "ros/team_conversions.h"
 
+#include "ros/conversions.h"
+
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -17,19 +19,6 @@ XmlAttribute num(const std::string& name, double v, double reliability = 1.0) {
   return {name, v, "", 0.0, reliability};
 }
 XmlAttribute sym(const std::string& name, const std::string& s) { return {name, 0.0, s, 0.0, 1.0}; }
-
-void stamp_to(const std_msgs::Header& h, XmlMessage* x) {
-  x->sec = h.stamp.sec;
-  x->nsec = h.stamp.nsec;
-  x->frame = h.frame_id;
-}
-void stamp_from(const XmlMessage& x, std_msgs::Header* h) {
-  if (x.sec < 0 || x.sec > static_cast<int64_t>(UINT32_MAX))
-    throw XmlError(0, "time stamp " + std::to_string(x.sec) + " s is outside the ROS time range [0, 4294967295] s");
-  h->stamp.sec = static_cast<uint32_t>(x.sec);
-  h->stamp.nsec = x.nsec;
-  h->frame_id = x.frame;
-}
 
 // Reads the attributes of one object: every numeric attribute asked for must
 // be there exactly once; symbols are optional; anything left over is an error
