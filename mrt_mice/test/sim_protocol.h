@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mrt_mice/calibrator.h"
+#include "mrt_mice/count_aligner.h"
 #include "mrt_mice/mice_params.h"
 #include "mrt_sim/simulator.h"
 
@@ -21,6 +22,11 @@ struct SimMice {
   double noise = 0.0;       // multiplicative length noise per step
   double fault_rate = 0.0;  // per step
   double fault_max_fraction = 0.5;
+  /// The physical model (mrt_sim/mouse_model.h), per mouse (left, right);
+  /// off (the ideal model, the estimator's exact inverse) by default.
+  mrt::sim::MousePhysics physics[2];
+  std::vector<mrt::sim::Surface> surfaces;  // the floor under the physical mice
+  bool physical() const { return physics[0].enabled || physics[1].enabled; }
 };
 
 /// A world with one IANUS3 robot (differential drive: it turns in place
@@ -46,10 +52,12 @@ inline mrt::sim::World make_world(const SimMice& m, std::uint64_t seed = 1) {
     c.noise = m.noise;
     c.fault_rate = m.fault_rate;
     c.fault_max_fraction = m.fault_max_fraction;
+    c.physics = m.physics[i];
     s.mice.push_back(c);
   }
   r.sensors = s;
   w.robots.push_back(r);
+  w.surfaces = m.surfaces;
   return w;
 }
 
@@ -61,6 +69,25 @@ inline MiceCounts to_counts(const mrt::sim::MiceSample& s) {
   c.right_dy = s.right_dy;
   return c;
 }
+
+/// What the driver does on a robot (mice_evdev_node): each physical
+/// mouse's reports, stamped on its own clock, go to a CountAligner, and the
+/// sample is taken at the sample's time. The ideal model's sample as is.
+class AlignedMice {
+ public:
+  explicit AlignedMice(bool physical, AlignerOptions o = {}) : physical_(physical), aligner_(o) {}
+  MiceCounts operator()(const mrt::sim::MiceSample& s) {
+    if (!physical_) return to_counts(s);  // the ideal model: both read at the sample's instant
+    for (const auto& r : s.left_reports) aligner_.add(0, r.t, r.dx, r.dy);
+    for (const auto& r : s.right_reports) aligner_.add(1, r.t, r.dx, r.dy);
+    return aligner_.take(s.time);
+  }
+  const CountAligner& aligner() const { return aligner_; }
+
+ private:
+  bool physical_;
+  CountAligner aligner_;
+};
 
 using SampleFn = std::function<void(const mrt::sim::RobotState&)>;
 

@@ -62,8 +62,9 @@ inline std::vector<Pose2D> run_square(std::uint64_t seed, bool clockwise, const 
   std::uniform_real_distribution<double> u(0.0, 1.0);
   bool moving = false;
   int moving_samples = 0;
+  sim::AlignedMice aligned(mice.physical());
   auto on = [&](const mrt::sim::RobotState& r) {
-    MiceCounts c = sim::to_counts(r.mice);
+    MiceCounts c = aligned(r.mice);
     bool slip = false;
     // A slip (manual §4.2): for part of the sample one mouse sees nothing.
     if (slips && moving && moving_samples > 0 && slips->rate > 0 && u(slips->rng) < slips->rate) {

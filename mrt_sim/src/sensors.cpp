@@ -1,4 +1,4 @@
-// Sensor models: optical mice, sonar cones, omnidirectional vision.
+// Sensor models: sonar cones, omnidirectional vision (the mice: mouse_model.cpp).
 #include "mrt_sim/sensors.h"
 
 #include <algorithm>
@@ -87,46 +87,6 @@ bool segments_cross(const Point2D& p, const Point2D& q, const Segment& s) {
 }
 
 }  // namespace
-
-Point2D mouse_displacement(const Pose2D& mount, const Twist2D& t, double dt) {
-  // Velocity of the mouse point in the body frame, constant under a constant twist.
-  const double ux = t.vx - t.omega * mount.y, uy = t.vy + t.omega * mount.x;
-  const double c = std::cos(mount.theta), s = std::sin(mount.theta);
-  return {dt * (c * ux + s * uy), dt * (-s * ux + c * uy)};
-}
-
-bool MouseModel::step(const Twist2D& t, double dt, std::mt19937_64& rng) {
-  const Point2D d = mouse_displacement(cfg_.mount, t, dt);
-  double scale = cfg_.counts_per_m;
-  if (cfg_.noise > 0.0) scale *= std::max(0.0, 1.0 + cfg_.noise * std::normal_distribution<double>()(rng));
-  bool fault = false;
-  if (cfg_.fault_rate > 0.0 && std::uniform_real_distribution<double>()(rng) < cfg_.fault_rate) {
-    const double u = 1.0 - std::uniform_real_distribution<double>()(rng);  // (0, 1]
-    scale *= 1.0 - u * cfg_.fault_max_fraction;
-    fault = true;
-  }
-  acc_x_ += d.x * scale;
-  acc_y_ += d.y * scale;
-  // Move whole counts out, keeping the remainder in [0, 1) (floor, as a
-  // position encoder does): the counts read so far are always the floor of
-  // the true total, so every report is off by less than one count, also
-  // when the motion reverses (truncation towards zero would keep a
-  // remainder in (-1, 1) and could be off by almost two counts then). The
-  // 1e-9 count tolerance absorbs rounding of sums such as 100 x 0.3.
-  const double wx = std::floor(acc_x_ + 1e-9);
-  const double wy = std::floor(acc_y_ + 1e-9);
-  out_x_ += static_cast<int>(wx);
-  out_y_ += static_cast<int>(wy);
-  acc_x_ -= wx;
-  acc_y_ -= wy;
-  return fault;
-}
-
-void MouseModel::read(int& dx, int& dy) {
-  dx = out_x_;
-  dy = out_y_;
-  out_x_ = out_y_ = 0;
-}
 
 std::optional<double> ray_cast(const World& w, const std::vector<Circle>& extra, Point2D origin,
                                double angle, double max_range) {

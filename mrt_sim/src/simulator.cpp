@@ -171,7 +171,7 @@ void Simulator::step() {
           std::floor(r.encoder_angle[k] * r.config.sensors.ticks_per_rev / (2.0 * kPi)));
     }
     for (std::size_t k = 0; k < mice_[i].size(); ++k)
-      if (mice_[i][k].step(r.twist, dt_, rng_)) mice_fault_[i][k] = true;
+      if (mice_[i][k].step(r.twist, r.pose, time_, dt_, world_.surfaces, rng_)) mice_fault_[i][k] = true;
   }
   move_movers();
   move_ball();
@@ -299,8 +299,11 @@ void Simulator::update_sensors(std::size_t i) {
 
   if (fires(cfg.rate_mice) && mice_[i].size() >= 2) {
     r.mice_ready = true;
-    mice_[i][0].read(r.mice.left_dx, r.mice.left_dy);
-    mice_[i][1].read(r.mice.right_dx, r.mice.right_dy);
+    mice_[i][0].read(r.mice.left_dx, r.mice.left_dy, &r.mice.left_reports);
+    mice_[i][1].read(r.mice.right_dx, r.mice.right_dy, &r.mice.right_reports);
+    r.mice.time = time_;
+    r.mice.left_stamp = mice_[i][0].last_report_time();
+    r.mice.right_stamp = mice_[i][1].last_report_time();
     r.mice.left_fault = mice_fault_[i][0];
     r.mice.right_fault = mice_fault_[i][1];
     std::fill(mice_fault_[i].begin(), mice_fault_[i].end(), false);

@@ -39,7 +39,7 @@ class Loader : private mrt::common::YamlReader {
       fail(root, "expected a map at the top level");
     }
     map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
-                        "movers", "robots", "line_width", "floor_color"});
+                        "movers", "robots", "line_width", "floor_color", "surfaces"});
     World w;
     w.file = file();
     w.name = string(root, "name", "", true, "world");
@@ -62,6 +62,8 @@ class Loader : private mrt::common::YamlReader {
     if (const Node n = root["ball"]) w.ball = ball(n);
     if (const Node n = root["movers"])
       for (const Node& e : sequence(n, "movers")) w.movers.push_back(mover(e));
+    if (const Node n = root["surfaces"])
+      for (const Node& e : sequence(n, "surfaces")) w.surfaces.push_back(surface(e));
 
     const Node rn = required(root, "robots", "world");
     std::set<std::string> names;
@@ -97,6 +99,22 @@ class Loader : private mrt::common::YamlReader {
       out.push_back({{c[0] + r * std::cos(a0), c[1] + r * std::sin(a0)},
                      {c[0] + r * std::cos(a1), c[1] + r * std::sin(a1)}});
     }
+  }
+
+  // A floor patch for the physical mice: {name, min: [x, y], max: [x, y],
+  // resolution, clearance}.
+  Surface surface(const Node& n) const {
+    map(n, "surfaces", {"name", "min", "max", "resolution", "clearance"});
+    Surface f;
+    f.name = string(n, "name", "", false, "surfaces");
+    const auto lo = numbers(required(n, "min", "surfaces"), "min", 2);
+    const Node hn = required(n, "max", "surfaces");
+    const auto hi = numbers(hn, "max", 2);
+    if (!(lo[0] < hi[0] && lo[1] < hi[1])) fail(hn, "expected 'max' above and right of 'min' in 'surfaces'");
+    f.min_x = lo[0], f.min_y = lo[1], f.max_x = hi[0], f.max_y = hi[1];
+    f.resolution = positive(n, "resolution", f.resolution);
+    f.clearance = number(n, "clearance", f.clearance);
+    return f;
   }
 
   Post post(const Node& n) const {
@@ -230,9 +248,14 @@ class Loader : private mrt::common::YamlReader {
   // The mounts come from the robot's URDF when it has the mouse link; the
   // world file's x, y, theta override them.
   void mice(const Node& m, SensorsConfig& s, const std::optional<DescriptionMounts>& d) const {
-    map(m, "mice", {"rate", "counts_per_m", "noise", "fault_rate", "fault_max_fraction", "left", "right"});
+    map(m, "mice", {"rate", "counts_per_m", "noise", "fault_rate", "fault_max_fraction", "left", "right", "model",
+                    "height", "liftoff", "height_gain", "max_speed", "max_accel", "report_rate", "phase", "drift_ppm"});
     s.rate_mice = non_negative(m, "rate", 50.0);
     MouseConfig shared;
+    const std::string model = string(m, "model", "ideal", false, "mice");
+    if (model != "ideal" && model != "physical") fail(m["model"], "expected 'model' ideal or physical, got '" + model + "'");
+    shared.physics.enabled = model == "physical";
+    physics(m, shared.physics);
     shared.counts_per_m = positive(m, "counts_per_m", shared.counts_per_m);
     shared.noise = non_negative(m, "noise", shared.noise);
     shared.fault_rate = fraction(m, "fault_rate", shared.fault_rate);
@@ -244,7 +267,9 @@ class Loader : private mrt::common::YamlReader {
       const std::optional<LinkMount>& urdf = !d ? std::nullopt : c.id == "left" ? d->mouse_left : d->mouse_right;
       if (urdf) c.mount = Pose2D(urdf->position.x(), urdf->position.y(), urdf->yaw);
       if (const Node e = m[id]) {
-        map(e, id, {"x", "y", "theta", "counts_per_m", "noise", "fault_rate", "fault_max_fraction"});
+        map(e, id, {"x", "y", "theta", "counts_per_m", "noise", "fault_rate", "fault_max_fraction", "height", "liftoff",
+                    "height_gain", "max_speed", "max_accel", "report_rate", "phase", "drift_ppm"});
+        physics(e, c.physics);
         c.mount = Pose2D(number(e, "x", c.mount.x), number(e, "y", c.mount.y),
                          e["theta"] ? deg_to_rad(number(e["theta"], "theta")) : c.mount.theta);
         c.counts_per_m = positive(e, "counts_per_m", c.counts_per_m);
@@ -254,6 +279,18 @@ class Loader : private mrt::common::YamlReader {
       }
       s.mice.push_back(c);
     }
+  }
+
+  // The physical mouse's settings (shared in `mice`, or one mouse's).
+  void physics(const Node& n, MousePhysics& p) const {
+    p.height = number(n, "height", p.height);
+    p.liftoff = non_negative(n, "liftoff", p.liftoff);
+    p.height_gain = non_negative(n, "height_gain", p.height_gain);
+    p.max_speed = positive(n, "max_speed", p.max_speed);
+    p.max_accel = positive(n, "max_accel", p.max_accel);
+    p.report_rate = positive(n, "report_rate", p.report_rate);
+    p.phase = non_negative(n, "phase", p.phase);
+    p.drift_ppm = bounded(n, "drift_ppm", p.drift_ppm, -1e5, false, 1e5);
   }
 
   void encoders(const Node& e, SensorsConfig& s) const {

@@ -7,36 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "mrt_sim/mouse_model.h"  // MouseModel, mouse_displacement (kept here for old includes)
 #include "mrt_sim/world.h"
 
 namespace mrt::sim {
-
-/// Exact displacement of a mouse, in metres in its own frame, while the body
-/// moves with the constant twist `t` for `dt` seconds. A rigid body's point
-/// has constant velocity in the body's rotating frame, so the integral a
-/// mouse measures is dt * R(-phi) * (vx - omega*y_m, vy + omega*x_m).
-Point2D mouse_displacement(const Pose2D& mount, const Twist2D& t, double dt);
-
-/// An optical mouse producing integer counts: keeps the sub-count remainder
-/// between reports as a real sensor does: the counts read so far are the
-/// floor of the total displacement * counts_per_m, so each report is off by
-/// less than one count per axis whatever the motion.
-class MouseModel {
- public:
-  explicit MouseModel(MouseConfig cfg) : cfg_(std::move(cfg)) {}
-  const MouseConfig& config() const { return cfg_; }
-  /// Advances by one step of body twist `t` over `dt`; accumulates counts.
-  /// Noise and faults (manual §4.2: the mouse under-reads length, never
-  /// direction) are drawn from `rng`; returns true if a fault was injected.
-  bool step(const Twist2D& t, double dt, std::mt19937_64& rng);
-  /// Returns the counts accumulated since the last read and clears them.
-  void read(int& dx, int& dy);
-
- private:
-  MouseConfig cfg_;
-  double acc_x_ = 0.0, acc_y_ = 0.0;  // counts, fractional
-  int out_x_ = 0, out_y_ = 0;         // whole counts not yet read
-};
 
 /// A circle in the world frame (another robot's footprint).
 struct Circle {

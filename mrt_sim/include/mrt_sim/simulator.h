@@ -17,7 +17,13 @@ namespace mrt::sim {
 struct MiceSample {
   std::string left_id, right_id;
   int left_dx = 0, left_dy = 0, right_dx = 0, right_dy = 0;
-  bool left_fault = false, right_fault = false;  // a fault was injected since the last sample
+  bool left_fault = false, right_fault = false;  // a fault was injected (or, physical model,
+                                                 // counts lost) since the last sample
+  double time = 0.0;                         // simulation time of this sample
+  double left_stamp = 0.0, right_stamp = 0.0;  // simulation time of each mouse's last report
+                                               // (= time for the ideal model)
+  std::vector<MouseReport> left_reports, right_reports;  // physical model: the reports since
+                                                         // the last sample, on each mouse's clock
 };
 
 struct RobotState {

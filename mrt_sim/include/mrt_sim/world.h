@@ -74,6 +74,31 @@ struct Mover {
   bool done = false;    // reached the last waypoint of an open path
 };
 
+/// A patch of floor with its own effect on the optical mice (world file
+/// `surfaces`): an axis-aligned rectangle; where patches overlap, the last
+/// one listed wins. Elsewhere the floor has resolution 1, clearance 0.
+struct Surface {
+  std::string name;
+  double min_x = 0.0, min_y = 0.0, max_x = 0.0, max_y = 0.0;  // m, world frame
+  double resolution = 1.0;  // factor on a mouse's counts_per_m over it (carpet < 1)
+  double clearance = 0.0;   // m added to a mouse's height above the floor (> 0: a dip, or
+                            // the body lifted by a wheel on a bump; < 0: a bump under the mouse)
+};
+
+/// The physical mouse model (world file `sensors.mice.model: physical`,
+/// mouse_model.h); off, a mouse is the ideal model (the estimator's inverse).
+struct MousePhysics {
+  bool enabled = false;
+  double height = 0.0;        // m above the sensor's focus on a flat floor
+  double liftoff = 0.002;     // m: higher than this above focus the sensor sees nothing
+  double height_gain = 10.0;  // 1/m: counts scale by 1 - height_gain * height (magnification)
+  double max_speed = 1.0;     // m/s: faster, the sensor loses track (that step's counts lost)
+  double max_accel = 15.0;    // g: harder, the same
+  double report_rate = 125.0; // Hz: reports on the mouse's own clock (USB polling)
+  double phase = 0.0;         // s: first report, on that clock
+  double drift_ppm = 0.0;     // that clock's rate error (+ runs fast)
+};
+
 struct MouseConfig {
   std::string id;             // "left", "right"
   Pose2D mount;               // pose of the mouse frame in base_link
@@ -81,6 +106,7 @@ struct MouseConfig {
   double noise = 0.0;         // std-dev of a multiplicative length noise per step
   double fault_rate = 0.0;    // probability per step of losing contact (manual §4.2)
   double fault_max_fraction = 0.5;  // a fault loses up to this fraction of the step's length
+  MousePhysics physics;
 };
 
 struct SonarConfig {
@@ -161,6 +187,7 @@ struct World {
   Ball ball;
   std::vector<Mover> movers;
   std::vector<RobotConfig> robots;
+  std::vector<Surface> surfaces;       // floor patches seen by the physical mice
   std::uint64_t seed = 1;
 };
 

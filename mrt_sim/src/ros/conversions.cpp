@@ -39,7 +39,11 @@ mrt_msgs::MiceReading to_mice(const MiceSample& m, const RobotFrames& f, const r
   mrt_msgs::MiceReading r;
   r.header.stamp = stamp;
   r.header.frame_id = f.sensor_parent;
-  r.left.header.stamp = r.right.header.stamp = stamp;
+  // Each mouse stamped with its own last report (physical model: its own
+  // clock; ideal: the sample time).
+  auto before = [&](double age) { return stamp - ros::Duration(std::min(stamp.toSec(), std::max(0.0, age))); };
+  r.left.header.stamp = before(m.time - m.left_stamp);
+  r.right.header.stamp = before(m.time - m.right_stamp);
   r.left.header.frame_id = f.mouse(m.left_id);
   r.right.header.frame_id = f.mouse(m.right_id);
   r.left.mouse_id = m.left_id;
