@@ -34,6 +34,10 @@ struct NodeOptions {
   double input_timeout = 0.0;
   /// Safe set-points by action name; actions not listed get 0.
   std::map<std::string, double> safe_commands;
+  /// Crisp data stamped back by up to this (s) is out of order and dropped;
+  /// further back (a bag loop, a restarted clock) is taken as a new time
+  /// base; forward by more than this is a gap. Stamps of 0 are not checked.
+  double stamp_gap = 1.0;
 };
 
 // A string parameter parsed by `parse` (std::invalid_argument -> ParamError).
@@ -74,6 +78,7 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
              parse_defuzz_method);
   r.get_non_negative("rate", o.rate).get("introspection", o.introspection);
   r.get_non_negative("input_timeout", o.input_timeout).get("safe_commands", o.safe_commands);
+  r.get_positive("stamp_gap", o.stamp_gap);
   ParamReader::check(o.input_timeout == 0.0 || o.rate > 0.0, "input_timeout",
                      "0 unless ~rate > 0 (the timeout is checked at every fixed-rate cycle)");
   for (const auto& [name, value] : o.safe_commands)
@@ -139,6 +144,7 @@ class BrianNode {
                         why.c_str(), static_cast<unsigned long>(dropped_));
       return;
     }
+    if (!stamp_in_order(msg->header.stamp)) return;
     input_.clear();
     for (const auto& d : msg->data) input_.push_back({d.name, d.value, d.reliability});
     have_input_ = true;
@@ -148,6 +154,28 @@ class BrianNode {
       ROS_INFO("brian_node: crisp data again, cycling on it");
     }
     if (options_.rate <= 0.0) cycle(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp);
+  }
+
+  // Checks a message's stamp against the previous one: duplicated and
+  // out-of-order stamps are dropped (false), gaps and jumps back beyond
+  // ~stamp_gap are taken (true); each counted in the diagnostics.
+  bool stamp_in_order(const ros::Time& stamp) {
+    if (stamp.isZero()) return true;
+    if (have_stamp_) {
+      const double d = (stamp - last_stamp_).toSec();
+      if (d == 0.0 || (d < 0.0 && -d <= options_.stamp_gap)) {
+        std::uint64_t& n = d == 0.0 ? duplicate_stamps_ : out_of_order_stamps_;
+        ++n;
+        ROS_WARN_THROTTLE(5.0, "brian_node: dropped crisp data with a %s stamp (%.3f s after the previous one)",
+                          d == 0.0 ? "duplicated" : "out-of-order", d);
+        return false;
+      }
+      if (d < 0.0) ++stamp_jumps_back_;
+      else if (d > options_.stamp_gap) ++stamp_gaps_;
+    }
+    have_stamp_ = true;
+    last_stamp_ = stamp;
+    return true;
   }
 
   // Fixed rate: a cycle on the latest input, or the safe commands when no
@@ -272,6 +300,10 @@ class BrianNode {
     s.add("input timeout (s)", options_.input_timeout);
     s.add("publishing safe commands", stale_ ? "yes" : "no");
     s.add("stale-input periods", stale_periods_);
+    s.add("duplicate stamps (dropped)", duplicate_stamps_);
+    s.add("out-of-order stamps (dropped)", out_of_order_stamps_);
+    s.add("stamp gaps", stamp_gaps_);
+    s.add("stamp jumps back (new time base)", stamp_jumps_back_);
   }
 
   ros::NodeHandle nh_, pnh_;
@@ -287,7 +319,9 @@ class BrianNode {
   CommandList safe_;
   mrt_msgs::CommandArray last_cmd_;
   ros::Time last_input_;
-  bool have_input_ = false, stale_ = false;
+  bool have_input_ = false, stale_ = false, have_stamp_ = false;
+  ros::Time last_stamp_;
+  std::uint64_t duplicate_stamps_ = 0, out_of_order_stamps_ = 0, stamp_gaps_ = 0, stamp_jumps_back_ = 0;
   std::uint64_t cycles_ = 0, dropped_ = 0, reloads_ = 0, stale_periods_ = 0;
   std::string last_reload_error_;
 };

@@ -109,9 +109,16 @@ class MiceOdometryNode {
         have_last_ = false;
       } else {
         ++dropped_;
+        ++out_of_order_;
         ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading older than the previous one");
         return;
       }
+    } else if (have_last_ && stamp == last_stamp_) {
+      // The same instant twice: a duplicated message (a bag written twice,
+      // a driver resending); integrating it would count its motion twice.
+      ++duplicates_;
+      ROS_WARN_THROTTLE(5.0, "mice_odometry: dropped a reading stamped like the previous one");
+      return;
     }
     MiceCounts c;
     c.left_dx = m->left.dx;
@@ -123,7 +130,10 @@ class MiceOdometryNode {
     // cover the whole gap (the driver drops what a mouse did while the
     // other was unplugged).
     double dt = have_last_ ? (stamp - last_stamp_).toSec() : 0.0;
-    if (dt > opt_.stale_timeout) dt = 0.0;
+    if (dt > opt_.stale_timeout) {
+      dt = 0.0;
+      ++gaps_;
+    }
     have_last_ = true;
     last_stamp_ = stamp;
     last_wall_ = ros::WallTime::now();
@@ -182,6 +192,9 @@ class MiceOdometryNode {
     st.add("uncorrectable", s.uncorrectable);
     st.add("dropped (malformed)", dropped_);
     st.add("resets (time jumped back)", resets_);
+    st.add("out-of-order stamps (dropped)", out_of_order_);
+    st.add("duplicate stamps (dropped)", duplicates_);
+    st.add("stamp gaps (no twist)", gaps_);
     st.add("rms residual (m)", s.rms_residual());
     st.add("distance (m)", odo_.distance());
     st.add("seconds since last reading", age);
@@ -200,6 +213,7 @@ class MiceOdometryNode {
   ros::WallTime last_wall_;
   std::uint64_t dropped_ = 0;
   std::uint64_t resets_ = 0;
+  std::uint64_t out_of_order_ = 0, duplicates_ = 0, gaps_ = 0;
 };
 
 }  // namespace
