@@ -1,11 +1,16 @@
 // airboard_emulator: the AIRBoard firmware model on a pseudo-terminal.
-// ROS-free; runnable as a plain program or as a <node> in a launch file
-// (ROS arguments of the form name:=value are ignored).
+// A plain program, runnable as a <node> in a launch file (ROS arguments of
+// the form name:=value are ignored); only with --ros-time does it join the
+// ROS graph, to take its board time from ros::Time (a simulator's /clock
+// when /use_sim_time is true).
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
+
+#include <ros/ros.h>
 
 #include "mrt_airboard/pty_emulator.h"
 
@@ -29,6 +34,8 @@ void usage() {
       "  --seed N              seed of the fault generator (default 1)\n"
       "  --baud N              carry bytes at the rate of an N-baud 8N1 line (default 0: instantly)\n"
       "  --require-checked     refuse plain SET_SPEED / SET_PWM from power-up (CRC-32 checked ones only)\n"
+      "  --ros-time            board time follows ros::Time (the simulator's /clock under /use_sim_time)\n"
+      "                        instead of the wall clock; needs a ROS master\n"
       "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
       "prints its statistics on stderr. Arguments name:=value (ROS) are ignored.\n";
 }
@@ -38,6 +45,7 @@ int main(int argc, char** argv) {
   mrt::airboard::FirmwareConfig fw;
   mrt::airboard::LineFaults faults;
   std::string link;
+  bool ros_time = false;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -60,6 +68,7 @@ int main(int argc, char** argv) {
       else if (a == "--cut-rx-after") faults.cut_rx_after = std::stod(val());
       else if (a == "--baud") faults.baud = std::stoi(val());
       else if (a == "--require-checked") fw.require_checked = true;
+      else if (a == "--ros-time") ros_time = true;
       else if (a == "--seed") faults.seed = static_cast<uint32_t>(std::stoul(val()));
       else if (a == "-h" || a == "--help") { usage(); return 0; }
       else throw std::invalid_argument("unknown option " + a);
@@ -69,11 +78,17 @@ int main(int argc, char** argv) {
     usage();
     return 2;
   }
+  std::unique_ptr<ros::NodeHandle> nh;
+  if (ros_time) {
+    ros::init(argc, argv, "airboard_emulator", ros::init_options::NoSigintHandler);
+    nh = std::make_unique<ros::NodeHandle>();  // starts the node: /clock is followed from here on
+  }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   std::signal(SIGHUP, on_signal);
   try {
     mrt::airboard::PtyEmulator emu(fw, faults, link);
+    if (ros_time) emu.set_time_source([] { return ros::Time::now().toSec(); });
     std::cout << "pty: " << emu.slave_path() << std::endl;
     emu.run(g_stop);
     const auto& s = emu.stats();
@@ -88,5 +103,6 @@ int main(int argc, char** argv) {
     std::cerr << "airboard_emulator: " << e.what() << "\n";
     return 1;
   }
+  if (ros_time) ros::shutdown();
   return 0;
 }

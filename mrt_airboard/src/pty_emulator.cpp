@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <fcntl.h>
 #include <poll.h>
@@ -153,7 +154,63 @@ void PtyEmulator::service_line(Clock::time_point now) {
   if (k) write_out(buf, k);
 }
 
+void PtyEmulator::run_on_source(const std::atomic<bool>& stop) {
+  const double hz = fw_.config().control_hz;
+  constexpr std::uint64_t kMaxSteps = 1000;
+  double start = 0.0;
+  std::uint64_t done = 0;
+  bool started = false;
+  // The cable runs at its baud rate in the source's time too: a byte takes
+  // 10 / baud s of source time, converted to wall time by the source's rate
+  // over the last 100 ms of wall time (at a real-time factor of 2 the line
+  // carries twice the bytes per wall second, as the board sends them).
+  const Clock::duration byte_time = byte_time_;
+  auto rate_since = Clock::now();
+  double rate_source = time_source_();
+  while (!stop.load(std::memory_order_relaxed)) {
+    if (byte_time.count() > 0 && Clock::now() - rate_since >= std::chrono::milliseconds(100)) {
+      const double wall = std::chrono::duration<double>(Clock::now() - rate_since).count(), src = time_source_();
+      const double factor = std::min(100.0, std::max(0.01, (src - rate_source) / wall));
+      if (src > rate_source) byte_time_ = std::chrono::duration_cast<Clock::duration>(byte_time / factor);
+      rate_since = Clock::now();
+      rate_source = src;
+    }
+    service_line(Clock::now());
+    // Input as soon as it comes; the source is looked at every 0.2 ms of
+    // wall time (a simulator's /clock moves in steps of its own).
+    pollfd p{master_, POLLIN, 0};
+    timespec ts{0, 200000};
+    if (::ppoll(&p, 1, &ts, nullptr) > 0 && (p.revents & POLLIN)) {
+      while (handle_input()) {
+      }
+    }
+    const double now = time_source_();
+    if (!started) {
+      if (!(now > 0.0)) continue;
+      started = true;
+      start = now;
+    }
+    const double elapsed = (now - start) * hz;
+    const std::uint64_t due = elapsed > 0.0 ? static_cast<std::uint64_t>(std::floor(elapsed + 1e-9)) : 0;
+    if (now < start || due - done > kMaxSteps) {  // back in time or a long jump: pause
+      if (due > done) stats_.paused_ticks += due - done;
+      start = now;
+      done = 0;
+      continue;
+    }
+    const std::uint64_t steps = due - done;
+    for (std::uint64_t k = 0; k < steps; ++k) fw_.step();
+    if (steps > 1) stats_.late_ticks += steps - 1;
+    done = due;
+    flush();
+  }
+}
+
 void PtyEmulator::run(const std::atomic<bool>& stop) {
+  if (time_source_) {
+    run_on_source(stop);
+    return;
+  }
   const auto period = std::chrono::microseconds(1000000 / fw_.config().control_hz);
   // A real board never stalls; this process can (a loaded machine). Up to
   // kMaxCatchUp late periods are caught up; beyond that board time pauses,

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 #include <unistd.h>
 
@@ -57,6 +58,55 @@ TEST(PtyEmulator, ServesTheProtocolOnAPseudoTerminal) {
   EXPECT_GE(emu->firmware().commands_applied(), 1u);
   emu.reset();
   EXPECT_NE(::access(link.c_str(), F_OK), 0);  // the symlink is gone
+}
+
+TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
+  // The board on a simulator's clock running at twice the wall clock (a
+  // real-time factor of 2): a wheel commanded at 5 rad/s turns, over 2 s of
+  // that clock (1 s of wall time), 5 * 2 * 8192 / (2 pi) = 13038 counts; on
+  // the wall clock it would turn half of that (6519).
+  const std::string link = "/tmp/mrt_airboard_gtest_clock_" + std::to_string(::getpid());
+  std::atomic<bool> stop{false};
+  FirmwareConfig c;
+  c.motors = 2;
+  PtyEmulator emu(c, LineFaults{}, link);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto sim_time = [t0] {
+    return 1.0 + 2.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  emu.set_time_source(sim_time);
+  std::thread t([&] { emu.run(stop); });
+  SerialPort port;
+  port.open(link, 115200);
+  FrameDecoder dec;
+  uint8_t seq = 0;
+  // Commands every 10 ms of wall time (20 ms of board time, within the
+  // watchdog's 100 ms); returns the reply's ticks of motor 0 and the source
+  // time at its reception.
+  auto command = [&](double* when) {
+    const auto f = encode_frame(make_set_speed(++seq, {5.0, 5.0}));
+    port.write(f.data(), f.size());
+    BoardState st;
+    EXPECT_TRUE(read_until(port, dec, 1000, [&](const Frame& fr) { return parse_state(fr, &st) && fr.seq == seq; }));
+    *when = sim_time();
+    return st.motors.empty() ? 0 : st.motors[0].ticks;
+  };
+  double start = 0.0, end = 0.0;
+  for (int i = 0; i < 30; ++i) {  // 0.3 s of wall time: the wheel at speed (tau 20 ms)
+    command(&start);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  const int32_t first = command(&start);
+  int32_t last = first;
+  while (end - start < 2.0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    last = command(&end);
+  }
+  stop = true;
+  t.join();
+  const double expected = 5.0 * (end - start) * 8192.0 / (2.0 * M_PI);  // about 13038
+  EXPECT_NEAR(last - first, expected, 0.01 * expected) << "over " << end - start << " s of source time";
+  EXPECT_EQ(emu.firmware().watchdog_trips(), 0u);
 }
 
 TEST(PtyEmulator, CarriesBytesAtTheBaudRate) {

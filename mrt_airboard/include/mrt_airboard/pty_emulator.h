@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -42,8 +43,19 @@ class PtyEmulator {
   const std::string& slave_path() const { return slave_path_; }
   /// Serves the board until `stop` becomes true: input is handled as soon as
   /// it arrives, step() runs every 1 ms of wall time (up to 20 late periods
-  /// are caught up; after a longer stall of this process board time pauses).
+  /// are caught up; after a longer stall of this process board time pauses),
+  /// or, with a time source, every 1 ms of that source's time.
   void run(const std::atomic<bool>& stop);
+
+  /// Board time follows `seconds` (e.g. ROS time on a simulator's /clock)
+  /// instead of the wall clock: the firmware steps as many 1 ms periods as
+  /// the source advanced (up to 1000 at once; a larger jump, or the source
+  /// going back, restarts the count without stepping: board time pauses).
+  /// Board time starts at the first positive reading (a /clock not yet
+  /// published reads 0). The line's baud-rate throttling follows the
+  /// source too (a byte takes 10 / baud s of source time, converted to wall
+  /// time by the source's rate over the last 100 ms). Only between runs.
+  void set_time_source(std::function<double()> seconds) { time_source_ = std::move(seconds); }
 
   /// Only between runs.
   const Firmware& firmware() const { return fw_; }
@@ -51,6 +63,7 @@ class PtyEmulator {
 
  private:
   using Clock = std::chrono::steady_clock;
+  void run_on_source(const std::atomic<bool>& stop);
   void flush();
   bool handle_input();  // one non-blocking read; false when nothing was read
   void deliver(uint8_t* d, std::size_t n);
@@ -69,6 +82,7 @@ class PtyEmulator {
   Clock::duration byte_time_{0};
   std::deque<std::pair<uint8_t, Clock::time_point>> rx_q_, tx_q_;
   Clock::time_point rx_free_{}, tx_free_{};
+  std::function<double()> time_source_;
 };
 
 }  // namespace mrt::airboard
