@@ -1,4 +1,4 @@
-// recvision_museum_bench [--frames N] [--calib FILE] [--world FILE]
+// recvision_museum_bench [--frames N] [--calib FILE] [--world FILE] [--list]
 // FollowMe's museum through the rendered camera: the robot drives a loop
 // through the south-west room (up to 0.5 m/s, turning), the guest follows
 // 1.5-2.5 m behind, the other visitors walk in the east rooms. Per frame:
@@ -59,15 +59,22 @@ void report(const char* name, const museum::Tally& t) {
   std::printf("%s_reported_not_there: %d of %d\n", name, t.false_positives, t.reported);
 }
 
+void list(const char* name, const museum::Tally& t) {
+  for (const std::string& m : t.missed) std::fprintf(stderr, "%s missed: %s\n", name, m.c_str());
+  for (const std::string& m : t.spurious) std::fprintf(stderr, "%s not there: %s\n", name, m.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int frames = 600;
+  bool verbose = false;
   std::string calib = MRT_RECVISION_CONFIG_DIR "/museum.yaml", world = MRT_SIM_MUSEUM;
   CLI::App app{"recvision_museum_bench: RecVision's time per frame and accuracy in FollowMe's rendered museum"};
   app.add_option("--frames", frames, "rendered frames (10 Hz)")->check(CLI::PositiveNumber);
   app.add_option("--calib", calib, "calibration file")->check(CLI::ExistingFile);
   app.add_option("--world", world, "mrt_sim world file (the museum)");
+  app.add_flag("--list", verbose, "list the objects missed and those reported that are not there (stderr)");
   if (const int code = mrt::cli::parse_cli(app, argc, argv); code >= 0) return code;
   if (world.empty()) {
     std::fprintf(stderr, "recvision_museum_bench: give --world (mrt_sim's worlds/museum.yaml)\n");
@@ -99,7 +106,12 @@ int main(int argc, char** argv) {
     t_render.push_back(c1 - c0);
     t_vision.push_back(c2 - c1);
     const auto truth = museum::truth(w, robot, cal.detector.min_distance);
+    const std::size_t missed = landmarks.missed.size(), spurious = landmarks.spurious.size();
     museum::evaluate(dets, truth, "Landmark", cal.camera, landmarks);
+    const std::string at = " (frame " + std::to_string(i) + ", robot " + std::to_string(robot.x) + " " +
+                           std::to_string(robot.y) + " " + std::to_string(robot.theta) + ")";
+    for (std::size_t k = missed; k < landmarks.missed.size(); ++k) landmarks.missed[k] += at;
+    for (std::size_t k = spurious; k < landmarks.spurious.size(); ++k) landmarks.spurious[k] += at;
     museum::evaluate(dets, truth, "Person", cal.camera, persons);
     museum::evaluate(dets, truth, "Exhibit", cal.camera, exhibits);
   }
@@ -111,5 +123,10 @@ int main(int argc, char** argv) {
   report("landmarks", landmarks);
   report("persons", persons);
   report("exhibits", exhibits);
+  if (verbose) {
+    list("landmarks", landmarks);
+    list("persons", persons);
+    list("exhibits", exhibits);
+  }
   return 0;
 }

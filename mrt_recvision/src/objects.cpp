@@ -161,7 +161,11 @@ void ObjectFinder::measure(int first, int n, std::vector<FoundObject>& out) cons
       }
       const double a = std::asin(std::min(1.0, r / (t_min + r)));
       bearing = hidden_hi ? b_first - 0.5 * step + a : b_last + 0.5 * step - a;
-      if (bearing < b_first - 0.5 * step || bearing > b_last + 0.5 * step) continue;  // its centre is hidden
+      if (bearing < b_first - 0.5 * step || bearing > b_last + 0.5 * step) {  // its centre would be hidden:
+        candidates.push_back(f);                                               // this kind cannot be ruled out
+        ambiguous = true;
+        continue;
+      }
       d = centre_distance(first, n, bearing, r);
       if (2.0 * d * std::sin(half) > kind.max_width) continue;  // already wider than this kind
     }
