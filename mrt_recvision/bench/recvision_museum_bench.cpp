@@ -106,14 +106,15 @@ int main(int argc, char** argv) {
     t_render.push_back(c1 - c0);
     t_vision.push_back(c2 - c1);
     const auto truth = museum::truth(w, robot, cal.detector.min_distance);
-    const std::size_t missed = landmarks.missed.size(), spurious = landmarks.spurious.size();
-    museum::evaluate(dets, truth, "Landmark", cal.camera, landmarks);
     const std::string at = " (frame " + std::to_string(i) + ", robot " + std::to_string(robot.x) + " " +
                            std::to_string(robot.y) + " " + std::to_string(robot.theta) + ")";
-    for (std::size_t k = missed; k < landmarks.missed.size(); ++k) landmarks.missed[k] += at;
-    for (std::size_t k = spurious; k < landmarks.spurious.size(); ++k) landmarks.spurious[k] += at;
-    museum::evaluate(dets, truth, "Person", cal.camera, persons);
-    museum::evaluate(dets, truth, "Exhibit", cal.camera, exhibits);
+    for (auto [cls, tally] : {std::make_pair("Landmark", &landmarks), std::make_pair("Person", &persons),
+                              std::make_pair("Exhibit", &exhibits)}) {
+      const std::size_t missed = tally->missed.size(), spurious = tally->spurious.size();
+      museum::evaluate(dets, truth, cls, cal.camera, *tally);
+      for (std::size_t k = missed; k < tally->missed.size(); ++k) tally->missed[k] += at;
+      for (std::size_t k = spurious; k < tally->spurious.size(); ++k) tally->spurious[k] += at;
+    }
   }
   std::printf("frames: %d frames\n", frames);
   std::printf("image: %dx%d px\n", cal.camera.width, cal.camera.height_px);
