@@ -17,8 +17,7 @@ void read_color(const YamlReader& r, const YAML::Node& n, ColorTable& table, std
   const YAML::Node name = r.required(n, "class", "colors");
   ColorClass c;
   if (!parse_color(r.string(name, "class"), c))
-    r.fail(name, "expected a colour class (green, white, orange, yellow, blue, black, cyan, magenta, red), got '" +
-                     name.Scalar() + "'");
+    r.fail(name, "expected a colour class (" + color_class_list() + "), got '" + name.Scalar() + "'");
   if (!n["hsv"] && !n["rgb"] && !n["samples"]) r.fail(n, "expected 'hsv', 'rgb' or 'samples' in a colour class");
   if (n["hsv"]) {
     const auto v = r.numbers(n["hsv"], "hsv", 6);
@@ -49,10 +48,22 @@ void read_color(const YamlReader& r, const YAML::Node& n, ColorTable& table, std
 }
 
 DetectorOptions read_detector(const YamlReader& r, const YAML::Node& n) {
-  r.map(n, "detector", {"radial_lines", "circles", "min_distance", "max_distance", "line_max_distance",
+  r.map(n, "detector", {"find", "radial_lines", "circles", "min_distance", "max_distance", "line_max_distance",
                         "line_min_width", "line_max_width", "line_gap", "max_line_points", "ball_radius",
                         "robot_radius", "min_ball_pixels", "min_goal_pixels", "min_robot_pixels"});
   DetectorOptions o;
+  if (n["find"]) {
+    o.find_lines = o.find_ball = o.find_goals = o.find_robots = false;
+    const YAML::Node list = n["find"];
+    for (const YAML::Node& e : r.sequence(list, "find")) {
+      const std::string f = r.string(e, "find");
+      if (f == "lines") o.find_lines = true;
+      else if (f == "ball") o.find_ball = true;
+      else if (f == "goals") o.find_goals = true;
+      else if (f == "robots") o.find_robots = true;
+      else r.fail(e, "expected lines, ball, goals or robots in 'find', got '" + f + "'");
+    }
+  }
   if (n["radial_lines"]) o.radial_lines = int(r.integer(n["radial_lines"], "radial_lines", 8, 4096));
   if (n["circles"]) {
     o.circles.clear();
@@ -77,6 +88,53 @@ DetectorOptions read_detector(const YamlReader& r, const YAML::Node& n) {
   return o;
 }
 
+ColorClass color_of(const YamlReader& r, const YAML::Node& n, const std::string& what) {
+  ColorClass c;
+  if (!parse_color(r.string(n, what), c))
+    r.fail(n, "expected a colour class (" + color_class_list() + ") in '" + what + "', got '" + n.Scalar() + "'");
+  return c;
+}
+
+std::vector<ColorClass> colors_of(const YamlReader& r, const YAML::Node& list, const std::string& what) {
+  std::vector<ColorClass> out;
+  for (const YAML::Node& e : r.sequence(list, what)) out.push_back(color_of(r, e, what));
+  if (out.empty()) r.fail(list, "expected at least one colour class in '" + what + "'");
+  return out;
+}
+
+ObjectKind read_kind(const YamlReader& r, const YAML::Node& n) {
+  r.map(n, "kinds", {"class", "colors", "radius", "width"});
+  ObjectKind k;
+  k.membership_class = r.string(r.required(n, "class", "kinds"), "class");
+  if (k.membership_class.empty()) r.fail(n["class"], "expected a non-empty class name");
+  k.colors = colors_of(r, r.required(n, "colors", "kinds"), "colors");
+  k.radius = r.non_negative(n, "radius", 0.0);
+  if (n["width"]) {
+    const auto w = r.numbers(n["width"], "width", 2);
+    if (w[0] < 0 || w[1] <= w[0]) r.fail(n["width"], "expected 'width' as [min, max] with 0 <= min < max (m)");
+    k.min_width = w[0];
+    k.max_width = w[1];
+  }
+  return k;
+}
+
+ObjectOptions read_objects(const YamlReader& r, const YAML::Node& n) {
+  r.map(n, "objects", {"floor", "max_jump", "min_pixels", "kinds", "wall", "wall_step", "wall_max_distance"});
+  ObjectOptions o;
+  o.enabled = true;
+  o.floor = colors_of(r, r.required(n, "floor", "objects"), "floor");
+  o.max_jump = r.positive(n, "max_jump", o.max_jump);
+  if (n["min_pixels"]) o.min_pixels = int(r.integer(n["min_pixels"], "min_pixels", 1, 1000));
+  if (n["kinds"]) {
+    const YAML::Node list = n["kinds"];
+    for (const YAML::Node& e : r.sequence(list, "kinds")) o.kinds.push_back(read_kind(r, e));
+  }
+  if (n["wall"]) o.wall = color_of(r, n["wall"], "wall");
+  if (n["wall_step"]) o.wall_step = int(r.integer(n["wall_step"], "wall_step", 1, 4096));
+  o.wall_max_distance = r.positive(n, "wall_max_distance", o.wall_max_distance);
+  return o;
+}
+
 std::string directory_of(const std::string& file) {
   const auto slash = file.find_last_of('/');
   return slash == std::string::npos ? std::string() : file.substr(0, slash + 1);
@@ -87,7 +145,7 @@ std::string directory_of(const std::string& file) {
 Calibration parse_calibration(const std::string& yaml_text, const std::string& file) {
   const YamlReader r(file);
   const YAML::Node root = r.load(yaml_text);
-  r.map(root, "calibration", {"camera", "mount", "colors", "lut", "detector"});
+  r.map(root, "calibration", {"camera", "mount", "colors", "lut", "detector", "objects"});
   Calibration cal;
   cal.file = file;
   cal.camera = mrt::common::read_omni_camera(r, r.required(root, "camera", "calibration"));
@@ -113,6 +171,7 @@ Calibration parse_calibration(const std::string& yaml_text, const std::string& f
     }
   }
   if (root["detector"]) cal.detector = read_detector(r, root["detector"]);
+  if (root["objects"]) cal.objects = read_objects(r, root["objects"]);
   return cal;
 }
 

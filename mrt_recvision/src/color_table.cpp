@@ -10,8 +10,9 @@
 namespace mrt::recvision {
 
 namespace {
-constexpr std::array<const char*, kColorClasses> kNames = {"none", "green", "white", "orange", "yellow",
-                                                          "blue", "black", "cyan", "magenta", "red"};
+constexpr std::array<const char*, kColorClasses> kNames = {
+    "none", "green", "white", "orange", "yellow", "blue", "black", "cyan", "magenta", "red",
+    "purple", "beige", "grey", "bronze"};
 
 // Centre colour of every bin, and its HSV (H degrees, S and V in [0, 1])
 // computed once by OpenCV.
@@ -43,6 +44,12 @@ bool parse_color(const std::string& name, ColorClass& out) {
     }
   }
   return false;
+}
+
+std::string color_class_list() {
+  std::string out;
+  for (std::size_t i = 1; i < kNames.size(); ++i) out += (i > 1 ? ", " : "") + std::string(kNames[i]);
+  return out;
 }
 
 bool HsvRange::contains(double h, double s, double v) const {

@@ -14,7 +14,7 @@ namespace {
 constexpr auto kOrange = static_cast<std::uint8_t>(ColorClass::kOrange);
 }  // namespace
 
-Detector::Detector(const Calibration& cal) : cal_(cal), grid_(cal.camera, cal.detector) {
+Detector::Detector(const Calibration& cal) : cal_(cal), grid_(cal.camera, cal.detector), objects_(cal.objects) {
   const auto& cam = cal_.camera;
   const auto& o = cal_.detector;
   valid_half_ = cv::Mat::zeros(cam.height_px / 2, cam.width / 2, CV_8U);
@@ -90,10 +90,12 @@ std::vector<Detection> Detector::process(const Frame& f) {
   }
   stats_ = DetectorStats();
   std::vector<Detection> out;
-  find_ball(f, out);
-  find_goals(out);
-  find_robots(out);
-  find_lines(img, out);
+  const DetectorOptions& o = cal_.detector;
+  if (o.find_ball) find_ball(f, out);
+  if (o.find_goals) find_goals(out);
+  if (o.find_robots) find_robots(out);
+  if (o.find_lines) find_lines(img, out);
+  if (cal_.objects.enabled) find_objects(out);
   return out;
 }
 
@@ -233,6 +235,30 @@ void Detector::find_robots(std::vector<Detection>& out) {
     r.sigma_distance = std::hypot(r.sigma_distance, 0.2 * o.robot_radius);
     r.reliability = std::min(1.0, s.pixels / (2.0 * o.min_robot_pixels));
     out.push_back(r);
+  }
+}
+
+}  // namespace mrt::recvision
+
+namespace mrt::recvision {
+
+void Detector::find_objects(std::vector<Detection>& out) {
+  std::vector<FoundObject> found;
+  std::vector<LinePoint> walls;
+  objects_.find(grid_, radial_cls_, found, walls);
+  const double step = 2.0 * M_PI / grid_.radial().size();
+  for (const FoundObject& f : found) {
+    Detection d = make(cal_.objects.kinds[f.kind].membership_class.c_str(), f.color, f.x, f.y, 1.0);
+    // The bearing is the middle of the lines covered: within half a line's
+    // step for a fully seen object (each edge is known to a step).
+    d.sigma_bearing = std::max(d.sigma_bearing, 0.5 * step);
+    d.reliability = f.occluded ? 0.7 : 1.0;
+    out.push_back(d);
+  }
+  for (const LinePoint& p : walls) {
+    Detection d = make("Wall", cal_.objects.wall, p.x, p.y, 0.5);
+    d.reliability = 0.9;
+    out.push_back(d);
   }
 }
 

@@ -17,6 +17,10 @@ cv::Scalar color_rgb(ColorClass c) {
     case ColorClass::kWhite: return {255, 255, 255};
     case ColorClass::kGreen: return {0, 200, 0};
     case ColorClass::kRed: return {255, 0, 0};
+    case ColorClass::kPurple: return {140, 40, 200};
+    case ColorClass::kBeige: return {190, 175, 150};
+    case ColorClass::kGrey: return {128, 128, 128};
+    case ColorClass::kBronze: return {170, 120, 60};
     default: return {60, 60, 60};
   }
 }
@@ -43,7 +47,7 @@ void Detector::draw(const Frame& f, const std::vector<Detection>& dets, cv::Mat&
   for (const Detection& d : dets) {
     if (!cam.project_ground(d.vx, d.vy, u, v)) continue;
     const cv::Point p(static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v)));
-    if (d.membership_class == "Line") {
+    if (d.membership_class == "Line" || d.membership_class == "Wall") {
       cv::circle(out, p, 1, {255, 0, 0}, cv::FILLED);
     } else if (d.membership_class == "Ball") {
       cv::circle(out, p, 7, rgb_of(d.color), 2);

@@ -56,7 +56,7 @@ TEST(Calibration, MountAndDetectorOptions) {
 
 TEST(Calibration, ErrorsNameTheLine) {
   const std::string c(kCamera);  // 3 lines
-  EXPECT_EQ(error_line(c + "colors:\n  - {class: purple, hsv: [0, 10, 0, 1, 0, 1]}\n"), 5);
+  EXPECT_EQ(error_line(c + "colors:\n  - {class: violet, hsv: [0, 10, 0, 1, 0, 1]}\n"), 5);
   EXPECT_EQ(error_line(c + "colors:\n  - {class: green,\n     hsv: [0, 10, 0, 2, 0, 1]}\n"), 6);
   EXPECT_EQ(error_line(c + "colors:\n  - {class: green}\n"), 5);
   EXPECT_EQ(error_line(c + "colors:\n  - {class: green, rgb: [0, 10, 0, 1, 0]}\n"), 5);
@@ -75,4 +75,52 @@ TEST(Calibration, LutFileIsRelativeToTheCalibrationFile) {
       parse_calibration(std::string(kCamera) + "colors: []\nlut: recv_lut.png\n", dir + "/cal.yaml");
   EXPECT_EQ(c.colors.classify(1, 2, 3), ColorClass::kCyan);
   EXPECT_EQ(c.colors.count(ColorClass::kCyan), 1);
+}
+
+// The museum's file: no MSL finder, the object finder with its three
+// kinds, and the colours mrt_sim's renderer paints (mrt_sim/src/camera.cpp,
+// color_rgb: RGB values copied from there) in their classes.
+TEST(Calibration, MuseumFileClassifiesTheRenderedColours) {
+  const Calibration c = mrt::recvision::load_calibration(MRT_RECVISION_CONFIG_DIR "/museum.yaml");
+  EXPECT_FALSE(c.detector.find_lines || c.detector.find_ball || c.detector.find_goals || c.detector.find_robots);
+  ASSERT_TRUE(c.objects.enabled);
+  ASSERT_EQ(c.objects.kinds.size(), 3u);
+  EXPECT_EQ(c.objects.kinds[0].membership_class, "Landmark");
+  EXPECT_DOUBLE_EQ(c.objects.kinds[0].radius, 0.08);
+  EXPECT_EQ(c.objects.kinds[1].membership_class, "Person");
+  EXPECT_DOUBLE_EQ(c.objects.kinds[1].radius, 0.25);
+  EXPECT_DOUBLE_EQ(c.objects.kinds[2].radius, 0.0);  // exhibits: measured
+  EXPECT_EQ(c.objects.wall, ColorClass::kGrey);
+  const auto& t = c.colors;
+  EXPECT_EQ(t.classify(190, 175, 150), ColorClass::kBeige);   // floor
+  EXPECT_EQ(t.classify(110, 110, 110), ColorClass::kGrey);    // walls
+  EXPECT_EQ(t.classify(128, 128, 128), ColorClass::kNone);    // the column (no colour)
+  EXPECT_EQ(t.classify(130, 40, 180), ColorClass::kPurple);   // the guest's badge
+  EXPECT_EQ(t.classify(240, 0, 200), ColorClass::kMagenta);
+  EXPECT_EQ(t.classify(255, 120, 0), ColorClass::kOrange);
+  EXPECT_EQ(t.classify(170, 120, 60), ColorClass::kBronze);
+  EXPECT_EQ(t.classify(0, 200, 60), ColorClass::kGreen);
+  EXPECT_EQ(t.classify(220, 20, 20), ColorClass::kRed);
+  EXPECT_EQ(t.classify(255, 220, 0), ColorClass::kYellow);
+  EXPECT_EQ(t.classify(0, 70, 255), ColorClass::kBlue);
+  EXPECT_EQ(t.classify(0, 220, 255), ColorClass::kCyan);
+  EXPECT_EQ(t.classify(255, 255, 255), ColorClass::kWhite);
+  // Pixel noise of 6 levels (3 sigma of the world's 2) keeps the floor and the badge.
+  EXPECT_EQ(t.classify(184, 181, 144), ColorClass::kBeige);
+  EXPECT_EQ(t.classify(136, 34, 186), ColorClass::kPurple);
+}
+
+TEST(Calibration, ObjectsAndFindErrorsNameTheLine) {
+  const std::string c = std::string(kCamera) + "colors: []\n";  // 4 lines
+  EXPECT_EQ(error_line(c + "detector: {find: [ball, goal]}\n"), 5);
+  EXPECT_EQ(error_line(c + "objects:\n  kinds: []\n"), 6);  // floor missing: the map begins on line 6
+  EXPECT_EQ(error_line(c + "objects:\n  floor: [violet]\n"), 6);
+  EXPECT_EQ(error_line(c + "objects:\n  floor: [beige]\n  kinds:\n    - {class: Person, colors: [purple], width: [0.8, 0.3]}\n"), 8);
+  EXPECT_EQ(error_line(c + "objects:\n  floor: [beige]\n  kinds:\n    - {class: Person, colors: []}\n"), 8);
+  EXPECT_EQ(error_line(c + "objects:\n  floor: [beige]\n  wall_step: 0\n"), 7);
+  const Calibration ok = parse_calibration(c + "detector: {find: [ball]}\nobjects: {floor: [beige, white]}\n", "cal.yaml");
+  EXPECT_TRUE(ok.detector.find_ball);
+  EXPECT_FALSE(ok.detector.find_lines);
+  EXPECT_EQ(ok.objects.floor.size(), 2u);
+  EXPECT_TRUE(ok.objects.kinds.empty());
 }

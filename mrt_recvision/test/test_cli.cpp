@@ -98,7 +98,7 @@ TEST(Cli, CalibrateLearnsTheMarkedColour) {
   EXPECT_EQ(t.classify(100, 60, 200), ColorClass::kMagenta);
   EXPECT_EQ(t.classify(108, 52, 207), ColorClass::kMagenta);   // a neighbouring bin
   EXPECT_EQ(t.classify(40, 140, 40), ColorClass::kNone);       // not marked, no --calib
-  EXPECT_EQ(cr::err(RECVISION_CALIBRATE, "--out " + lut + " --sample purple:a.png:b.png").code, 2);
+  EXPECT_EQ(cr::err(RECVISION_CALIBRATE, "--out " + lut + " --sample violet:a.png:b.png").code, 2);
 }
 
 TEST(Cli, MirrorCalibFitsRingsAtKnownDistances) {

@@ -111,7 +111,8 @@ cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback) {
       {"cyan", {0, 220, 255}},   {"magenta", {240, 0, 200}},  {"red", {220, 20, 20}},
       {"green", {0, 200, 60}},   {"white", {255, 255, 255}},  {"black", {0, 0, 0}},
       {"grey", {128, 128, 128}}, {"gray", {128, 128, 128}},   {"brown", {130, 80, 30}},
-      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}},  {"beige", {190, 175, 150}}};
+      {"purple", {130, 40, 180}}, {"pink", {255, 150, 190}},  {"beige", {190, 175, 150}},
+      {"bronze", {170, 120, 60}}};
   const auto it = kColors.find(name);
   return it == kColors.end() ? fallback : it->second;
 }

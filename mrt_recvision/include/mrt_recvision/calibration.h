@@ -11,6 +11,7 @@
 //     - {class: cyan, samples: [[0, 200, 220]]}          # labelled RGB samples
 //   lut: table.png                   # optional (recvision_calibrate); relative to this file
 //   detector: {...}                  # DetectorOptions, all optional
+//   objects: {...}                   # ObjectOptions (optional; the museum's)
 //
 // Every error is a mrt::common::ParseError naming file:line:column.
 #pragma once
@@ -25,6 +26,8 @@ namespace mrt::recvision {
 
 /// What the detector looks for and how far (distances in metres on the floor).
 struct DetectorOptions {
+  // The MSL finders to run (`find: [lines, ball, goals, robots]`, the default).
+  bool find_lines = true, find_ball = true, find_goals = true, find_robots = true;
   int radial_lines = 360;            // radial scan lines, evenly spaced in bearing
   std::vector<double> circles = {0.8, 1.2, 1.6, 2.0, 2.5, 3.0};  // circular scan lines at these distances
   double min_distance = 0.35;        // the robot's own body hides everything closer
@@ -41,12 +44,38 @@ struct DetectorOptions {
   int min_robot_pixels = 60;
 };
 
+/// One kind of object the object finder reports: an upright cylinder
+/// standing on the floor, of one of `colors`, whose apparent width
+/// (2 D sin(half the angle it covers), D its centre's distance) lies in
+/// [min_width, max_width].
+struct ObjectKind {
+  std::string membership_class;  // "Landmark", "Person", "Exhibit", ...
+  std::vector<ColorClass> colors;
+  double radius = 0.0;           // m; 0: measured from the apparent width
+  double min_width = 0.0, max_width = 1e9;  // m
+};
+
+/// The object finder (calibration `objects:`, ObjectFinder in objects.h):
+/// along each radial line the first run that is not floor is the foot of
+/// the nearest object standing there.
+struct ObjectOptions {
+  bool enabled = false;            // the calibration has an `objects:` block
+  std::vector<ColorClass> floor;   // classes of the floor
+  double max_jump = 0.3;           // m: neighbouring lines' feet farther apart are different objects
+  int min_pixels = 2;              // shorter runs (off the floor) are noise
+  std::vector<ObjectKind> kinds;
+  ColorClass wall = ColorClass::kNone;  // class of the walls; kNone: no Wall points
+  int wall_step = 5;               // one Wall point every wall_step radial lines
+  double wall_max_distance = 5.0;  // m
+};
+
 struct Calibration {
   std::string file;
   mrt::common::OmniCamera camera;
   ColorTable colors;
   double mount_x = 0.0, mount_y = 0.0, mount_yaw = 0.0;
   DetectorOptions detector;
+  ObjectOptions objects;
 };
 
 Calibration load_calibration(const std::string& path);

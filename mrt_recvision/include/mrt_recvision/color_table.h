@@ -13,14 +13,21 @@
 namespace mrt::recvision {
 
 /// The colour classes RecVision knows (the symbols of the percepts'
-/// `color` attribute). kNone is "unclassified".
-enum class ColorClass : std::uint8_t { kNone = 0, kGreen, kWhite, kOrange, kYellow, kBlue, kBlack, kCyan, kMagenta, kRed };
-constexpr int kColorClasses = 10;
+/// `color` attribute, spelled as mrt_sim's world files spell them). kNone
+/// is "unclassified". Purple, beige, grey and bronze are the museum's
+/// (FollowMe's visitor badge, floor, walls, an exhibit).
+enum class ColorClass : std::uint8_t {
+  kNone = 0, kGreen, kWhite, kOrange, kYellow, kBlue, kBlack, kCyan, kMagenta, kRed,
+  kPurple, kBeige, kGrey, kBronze
+};
+constexpr int kColorClasses = 14;
 
 /// "green", "white", ...; "none" for kNone.
 const char* color_name(ColorClass c);
 /// The class named `name`; false if there is none.
 bool parse_color(const std::string& name, ColorClass& out);
+/// Every class name but "none", comma-separated (for error messages).
+std::string color_class_list();
 
 /// A colour range: hue in degrees [h_min, h_max] (wrapping through 0 when
 /// h_min > h_max), saturation and value in [0, 1], all inclusive.

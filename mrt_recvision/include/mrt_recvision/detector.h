@@ -15,13 +15,14 @@
 
 #include "mrt_recvision/calibration.h"
 #include "mrt_recvision/frame.h"
+#include "mrt_recvision/objects.h"
 #include "mrt_recvision/scan_lines.h"
 
 namespace mrt::recvision {
 
 /// One perceived object, classes and attributes as the simulator's percepts.
 struct Detection {
-  std::string membership_class;  // "Line", "Ball", "Goal", "GoalPost", "Robot"
+  std::string membership_class;  // "Line", "Ball", "Goal", "GoalPost", "Robot"; objects: their kind's, "Wall"
   ColorClass color = ColorClass::kNone;
   double x = 0, y = 0;            // base_link, m
   double distance = 0, bearing = 0;  // from the base_link origin; rad counter-clockwise from x
@@ -59,12 +60,14 @@ class Detector {
   const DetectorStats& stats() const { return stats_; }
   const ScanGrid& grid() const { return grid_; }
   const Calibration& calibration() const { return cal_; }
+  const ObjectFinder& objects() const { return objects_; }
 
  private:
   void find_lines(const std::uint8_t* img, std::vector<Detection>& out);
   void find_ball(const Frame& f, std::vector<Detection>& out);
   void find_goals(std::vector<Detection>& out);
   void find_robots(std::vector<Detection>& out);
+  void find_objects(std::vector<Detection>& out);
   // Mean ray of the orange pixels in `roi` (solid-angle weighted), their
   // count and their smallest and largest image radius.
   bool ball_direction(const Frame& f, const cv::Rect& roi, Eigen::Vector3d& dir, int& count, double& r_min,
@@ -75,6 +78,7 @@ class Detector {
 
   Calibration cal_;
   ScanGrid grid_;
+  ObjectFinder objects_;
   std::vector<double> m_per_px_, rad_per_px_;  // per cm of floor distance
   double r_inner_ = 0;     // image radius of detector.min_distance (the body's blind zone)
   cv::Mat valid_half_;     // half-resolution mask of the annulus scanned for blobs

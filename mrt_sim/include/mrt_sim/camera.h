@@ -32,7 +32,8 @@ struct CameraShape;  // one object to draw (src/camera.cpp)
 
 /// RGB of a symbolic colour of the world file (`orange`, `yellow`, `blue`,
 /// `cyan`, `magenta`, `red`, `green`, `white`, `black`, `grey`/`gray`,
-/// `brown`, `purple`, `pink`, `beige`); `fallback` for "" or an unknown name.
+/// `brown`, `purple`, `pink`, `beige`, `bronze`); `fallback` for "" or an
+/// unknown name.
 cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback = cv::Vec3b(128, 128, 128));
 
 /// The colours and sizes the renderer draws with (RGB). The defaults are
