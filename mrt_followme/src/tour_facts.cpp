@@ -25,9 +25,14 @@ TourFacts TourFactsTracker::update(double t, const Pose2D& pose, const std::opti
     f.visitor_bearing = common::normalize_angle(std::atan2(dy, dx) - pose.theta);
     const double from_spot =
         exhibit_ ? std::hypot(visitor->x - exhibit_->spot.x, visitor->y - exhibit_->spot.y) : 1e9;
-    if (from_spot <= opt_.look_radius) looked_for_ += dt;
-    f.wandered = f.visitor_distance > opt_.wander_distance && from_spot > opt_.wander_distance;
+    const bool stands = speed < opt_.still_speed;
+    if (from_spot <= opt_.look_radius && stands) looked_for_ += dt;
     f.back = f.visitor_distance <= opt_.ready_distance;
+    // Wandered: standing away from the exhibit and from the robot (one
+    // walking up to the exhibit or behind the robot has not wandered).
+    f.wandered = stands && f.visitor_distance > opt_.ready_distance && from_spot > opt_.wander_distance;
+    // Ready: it has looked, left the spot and stands by the robot.
+    f.ready = looked_for_ >= opt_.look_time && f.back && stands && from_spot > 0.5 * opt_.look_radius;
     if (f.visitor_distance > opt_.keep_max) lagging_ = true;
     if (f.visitor_distance <= opt_.keep_resume) lagging_ = false;
     if (speed < opt_.still_speed) {
@@ -43,7 +48,6 @@ TourFacts TourFactsTracker::update(double t, const Pose2D& pose, const std::opti
   }
   f.lagging = lagging_;
   f.looked = looked_for_ >= opt_.look_time;
-  f.ready = f.looked && f.back;
   return f;
 }
 

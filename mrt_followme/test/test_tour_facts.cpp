@@ -25,23 +25,28 @@ TEST(TourFacts, LookedThenReady) {
   EXPECT_TRUE(a.back);
   EXPECT_FALSE(a.looked);
   EXPECT_FALSE(f.update(1.0, robot, Point2D{3.0, 2.5}, 0.0).looked);  // 1 s of 2
-  TourFacts c = f.update(2.0, robot, Point2D{3.0, 2.5}, 0.0);        // 2 s: looked, by the robot
+  TourFacts c = f.update(2.0, robot, Point2D{3.0, 2.5}, 0.0);        // 2 s: looked
   EXPECT_TRUE(c.looked);
-  EXPECT_TRUE(c.ready);
+  EXPECT_FALSE(c.ready);  // still on the spot (0.5 m, not more than half the look radius)
   EXPECT_FALSE(c.wandered);
+  // Left the spot (hypot(0.5, 1.5) = 1.58 m), stands 0.71 m from the robot: ready.
+  EXPECT_TRUE(f.update(3.0, robot, Point2D{3.5, 3.5}, 0.0).ready);
+  // ... but not while walking past (0.5 m/s).
+  EXPECT_FALSE(f.update(3.1, robot, Point2D{3.5, 3.5}, 0.5).ready);
   f.set_exhibit(kStatue);  // a new exhibit: looked again from 0
-  EXPECT_FALSE(f.update(2.5, robot, Point2D{3.0, 2.5}, 0.0).looked);
+  EXPECT_FALSE(f.update(3.5, robot, Point2D{3.0, 2.5}, 0.0).looked);
 }
 
 TEST(TourFacts, WanderedLaggingBack) {
   TourFactsTracker f(GuideOptions{});
   f.set_exhibit(kStatue);
   const Pose2D robot(4.0, 4.0, 0.0);
-  // 5 m from the robot, hypot(6, 2) = 6.32 m from the spot: wandered, lagging.
-  TourFacts w = f.update(3.0, robot, Point2D{9.0, 4.0}, 0.5);
+  // 5 m from the robot, hypot(6, 2) = 6.32 m from the spot, standing: wandered, lagging.
+  TourFacts w = f.update(3.0, robot, Point2D{9.0, 4.0}, 0.1);
   EXPECT_TRUE(w.wandered);
   EXPECT_TRUE(w.lagging);
   EXPECT_FALSE(w.back);
+  EXPECT_FALSE(f.update(3.2, robot, Point2D{9.0, 4.0}, 0.5).wandered);  // walking: not (yet)
   // 2.5 m: neither beyond keep_max nor within keep_resume: still lagging.
   EXPECT_TRUE(f.update(3.5, robot, Point2D{6.5, 4.0}, 0.5).lagging);
   // 2 m: back, no longer lagging.

@@ -17,9 +17,9 @@ struct TourFacts {
   bool visitor_seen = false;      // MAP has a track of the visitor
   double visitor_distance = 1e9;  // m, from the robot (when seen)
   double visitor_bearing = 0.0;   // rad, CCW from the robot's heading
-  bool looked = false;            // looked at the current exhibit for look_time
-  bool ready = false;             // looked and within ready_distance of the robot
-  bool wandered = false;          // far from the robot and from the exhibit, or lost
+  bool looked = false;            // stood within look_radius of the spot for look_time
+  bool ready = false;             // looked, left the spot (half look_radius), stands within ready_distance of the robot
+  bool wandered = false;          // stands beyond ready_distance from the robot and wander_distance from the spot, or lost
   bool lost = false;              // out of sight for lost_time
   bool back = false;              // within ready_distance of the robot
   bool lagging = false;           // farther than keep_max (until back within keep_resume)

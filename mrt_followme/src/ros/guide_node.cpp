@@ -16,6 +16,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -27,6 +28,7 @@
 #include "mrt_followme/museum.h"
 #include "mrt_followme/tour_facts.h"
 #include "mrt_msgs/CrispDataArray.h"
+#include "mrt_msgs/Percept.h"
 #include "mrt_msgs/TaskStatus.h"
 #include "tour_markers.h"
 
@@ -79,6 +81,8 @@ class GuideNode {
     result_pub_ = nh.advertise<std_msgs::String>("tour_result", 1, true);
     tour_pub_ = nh.advertise<std_msgs::String>("tour", 1, true);
     call_pub_ = nh.advertise<std_msgs::Empty>("call_visitor", 1);
+    door_pub_ = nh.advertise<mrt_msgs::Percept>("door_percepts", 5);
+    door_sub_ = nh.subscribe("close_door", 5, &GuideNode::on_close_door, this);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("tour_markers", 1, true);
     planner_ = nh.serviceClient<nav_msgs::GetPlan>(opt_.plan_service);
     service_ = pnh.advertiseService("set_tour", &GuideNode::on_set_tour, this);
@@ -174,7 +178,58 @@ class GuideNode {
     visitor_.reset();
     if (by.count("VisitorX") && by.count("VisitorY") && by["VisitorX"]->reliability > 0.05)
       visitor_ = Point2D{by["VisitorX"]->value, by["VisitorY"]->value};
-    visitor_speed_ = by.count("VisitorSpeed") ? by["VisitorSpeed"]->value : 0.0;
+    // Its speed: the track's displacement over the last second (MAP's
+    // filtered velocity jitters by 0.1-0.2 m/s around a standing person).
+    const double t = m.header.stamp.isZero() ? ros::Time::now().toSec() : m.header.stamp.toSec();
+    if (!visitor_) {
+      track_.clear();
+      return;
+    }
+    track_.push_back({t, *visitor_});
+    while (track_.size() > 2 && t - track_[1].first >= 1.0) track_.pop_front();
+    const auto& [t0, p0] = track_.front();
+    visitor_speed_ = t - t0 >= 0.5 ? std::hypot(visitor_->x - p0.x, visitor_->y - p0.y) / (t - t0) : 0.0;
+  }
+
+  /// The museum's door sensor: a door closed now. SPIKE is told (its wall as
+  /// Obstacle percepts, every cycle) and the current leg re-planned.
+  void on_close_door(const std_msgs::String& m) {
+    try {
+      closed_.push_back(cfg_.door(m.data));
+      ROS_INFO("door %s closed: re-planning", m.data.c_str());
+      replan_at_ = ros::Time::now() + ros::Duration(0.5);  // once SPIKE has the door
+    } catch (const std::exception& e) {
+      ROS_WARN("close_door: %s", e.what());
+    }
+  }
+
+  void publish_doors() {
+    if (closed_.empty()) return;
+    mrt_msgs::Percept p;
+    p.header.stamp = ros::Time::now();
+    p.header.frame_id = opt_.frame;
+    p.sensor = "doors";
+    auto attr = [](const std::string& n, double v) {
+      mrt_msgs::Attribute a;
+      a.name = n;
+      a.value = v;
+      a.reliability = 1.0;
+      return a;
+    };
+    for (const auto& d : closed_) {
+      const double len = std::hypot(d.b.x - d.a.x, d.b.y - d.a.y);
+      const int n = std::max(2, static_cast<int>(std::ceil(len / 0.25)) + 1);  // discs 0.25 m apart
+      for (int i = 0; i < n; ++i) {
+        const double k = static_cast<double>(i) / (n - 1);
+        mrt_msgs::PerceptObject o;
+        o.name = d.name;
+        o.membership_class = "Obstacle";
+        o.attributes = {attr("x", d.a.x + k * (d.b.x - d.a.x)), attr("y", d.a.y + k * (d.b.y - d.a.y)),
+                        attr("radius", 0.2)};
+        p.objects.push_back(o);
+      }
+    }
+    door_pub_.publish(p);
   }
 
   void on_status(const mrt_msgs::TaskStatus& s) {
@@ -255,6 +310,11 @@ class GuideNode {
     add(w, "VisitorLost", f.lost);
     world_pub_.publish(w);
     send_pending_job();
+    publish_doors();
+    if (!replan_at_.isZero() && ros::Time::now() >= replan_at_) {
+      replan_at_ = ros::Time();
+      if (task_ == "Guide") request_plan();  // a later leg is planned by its Replan task
+    }
 
     mrt_msgs::CrispDataArray g;
     g.header.stamp = w.header.stamp;
@@ -330,11 +390,13 @@ class GuideNode {
   std::optional<Pose2D> pose_;
   std::optional<Point2D> visitor_;
   double visitor_speed_ = 0.0;
+  std::deque<std::pair<double, Point2D>> track_;
   mrt_msgs::CrispDataArray map_crisp_;
-  ros::Time started_;
-  ros::Subscriber pose_sub_, crisp_sub_, status_sub_;
+  ros::Time started_, replan_at_;
+  std::vector<Door> closed_;
+  ros::Subscriber pose_sub_, crisp_sub_, status_sub_, door_sub_;
   ros::Publisher odom_pub_, world_pub_, goal_pub_, job_pub_, plan_pub_, status_pub_, result_pub_, tour_pub_,
-      call_pub_, markers_pub_;
+      call_pub_, markers_pub_, door_pub_;
   ros::ServiceClient planner_;
   ros::ServiceServer service_;
   ros::Timer timer_;
