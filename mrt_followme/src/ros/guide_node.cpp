@@ -89,7 +89,7 @@ class GuideNode {
     std::vector<mrt::followme::ros_glue::ExhibitRing> rings;
     for (const auto& e : cfg_.exhibits) rings.push_back({e.name, e.spot.x, e.spot.y, 0.4});
     markers_ = std::make_unique<mrt::followme::ros_glue::TourMarkers>(
-        rings, opt_.frame, [this](const std::vector<std::string>& t) { return set_tour(t); });
+        rings, opt_.frame, [this](const std::vector<std::string>& t) { return set_tour(t); }, "/tour");
     timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &GuideNode::cycle, this);
   }
 
@@ -222,7 +222,7 @@ class GuideNode {
       for (int i = 0; i < n; ++i) {
         const double k = static_cast<double>(i) / (n - 1);
         mrt_msgs::PerceptObject o;
-        o.name = d.name;
+        o.name = d.name + "_" + std::to_string(i);  // SPIKE tracks obstacles by name
         o.membership_class = "Obstacle";
         o.attributes = {attr("x", d.a.x + k * (d.b.x - d.a.x)), attr("y", d.a.y + k * (d.b.y - d.a.y)),
                         attr("radius", 0.2)};

@@ -22,8 +22,11 @@ struct ExhibitRing {
 class TourMarkers {
  public:
   using Start = std::function<std::string(const std::vector<std::string>&)>;
-  TourMarkers(const std::vector<ExhibitRing>& exhibits, const std::string& frame, Start on_start)
-      : start_fn_(std::move(on_start)), server_("tour") {
+  /// `topic_ns`: the server's topics (`<topic_ns>/update`, ...; rviz's
+  /// followme.rviz listens on /tour).
+  TourMarkers(const std::vector<ExhibitRing>& exhibits, const std::string& frame, Start on_start,
+              const std::string& topic_ns = "tour")
+      : start_fn_(std::move(on_start)), server_(topic_ns) {
     menu_.insert("Start this tour", [this](const auto&) { start(); });
     menu_.insert("Clear the choice", [this](const auto&) { chosen_.clear(); });
     for (const auto& e : exhibits) {
