@@ -68,7 +68,8 @@ class GuideNode {
   GuideNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, Options o)
       : opt_(std::move(o)), cfg_(load_followme_config(opt_.config)), facts_(cfg_.guide) {
     const std::string bad = set_tour(opt_.tour.empty() ? cfg_.tour : opt_.tour);
-    if (!bad.empty()) throw mrt::ros_common::ParamError("tour", "exhibits of the configuration, each once (" + bad + ")");
+    if (!bad.empty())
+      throw mrt::ros_common::ParamError("tour", "exhibits of the configuration, each once (" + bad + ")");
     pose_sub_ = nh.subscribe("pose", 5, &GuideNode::on_pose, this);
     crisp_sub_ = nh.subscribe("map_crisp", 5, &GuideNode::on_crisp, this);
     status_sub_ = nh.subscribe("task_status", 50, &GuideNode::on_status, this);

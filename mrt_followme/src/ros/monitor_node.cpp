@@ -1,6 +1,6 @@
 // followme_monitor_node: the measures of the distributed FollowMe in
 // simulation, from ground truth (sim_node) and what the robot published:
-// MUREA's error, the closest a person came to the robot (footprints), the
+// MUREA's error (against the truth at the pose's stamp), the closest a person came to the robot (footprints), the
 // longest time the visitor was out of the camera's sight (no Person
 // percept of its colour). When the guide node reports the tour over
 // (tour_result) it publishes the summary (tour_summary, latched) in the
@@ -11,6 +11,7 @@
 #include <std_msgs/String.h>
 
 #include <cmath>
+#include <deque>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -49,12 +50,22 @@ class Monitor {
   }
 
  private:
-  void on_truth(const nav_msgs::Odometry& m) { truth_ = mrt::ros_common::to_pose2d(m.pose.pose); }
+  void on_truth(const nav_msgs::Odometry& m) {
+    truth_ = mrt::ros_common::to_pose2d(m.pose.pose);
+    history_.push_back({m.header.stamp.toSec(), *truth_});
+    while (history_.size() > 1 && history_.back().first - history_.front().first > 2.0) history_.pop_front();
+  }
 
+  /// MUREA's pose against the truth at its own stamp (the pose of a camera
+  /// frame arrives later than the truth of that moment).
   void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
-    if (!truth_) return;
+    if (history_.empty()) return;
+    const double t = m.header.stamp.toSec();
+    const auto* best = &history_.front();
+    for (const auto& h : history_)
+      if (std::abs(h.first - t) < std::abs(best->first - t)) best = &h;
     const Pose2D e = mrt::ros_common::to_pose2d(m.pose.pose);
-    r_.max_pose_error = std::max(r_.max_pose_error, std::hypot(e.x - truth_->x, e.y - truth_->y));
+    r_.max_pose_error = std::max(r_.max_pose_error, std::hypot(e.x - best->second.x, e.y - best->second.y));
   }
 
   void on_person(const std::string& name, const nav_msgs::Odometry& m) {
@@ -107,6 +118,7 @@ class Monitor {
   std::string color_ = "purple";
   double robot_radius_ = 0.25, person_radius_ = 0.25, first_ = -1.0, last_seen_ = 0.0;
   std::optional<Pose2D> truth_;
+  std::deque<std::pair<double, Pose2D>> history_;  // the last 2 s of ground truth
   mrt::followme::FollowMeResult r_;
   ros::Subscriber truth_sub_, pose_sub_, percept_sub_, result_sub_;
   std::vector<ros::Subscriber> people_subs_;
