@@ -113,7 +113,9 @@ fi
 if [ "$NAME" = followme ]; then
   echo "FollowMe tour:"
   # the summary: exhibits visited, wanders handled, time, longest time the
-  # visitor was out of sight, localization error from ground truth
+  # visitor was out of sight, localization error from ground truth (the
+  # distributed bringup's followme_monitor_node; followme_node's with
+  # distributed:=false)
   /usr/bin/python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]).read().split("---")[0])["data"])' \
     "$OUT/tour_summary.txt" | sed 's/^/  /' || echo "  (no summary: see $OUT/roslaunch.log)"
 fi

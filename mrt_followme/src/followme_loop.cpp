@@ -9,6 +9,8 @@
 
 #include "mrt_airboard/brian_mapping.h"
 #include "mrt_brian/brian.h"
+#include "mrt_followme/encoder_odometry.h"
+#include "mrt_followme/unmapped_echo.h"
 #include "mrt_followme/visitor_tracker.h"
 #include "mrt_murea/feature_map.h"
 #include "mrt_murea/tracker.h"
@@ -47,32 +49,6 @@ class BrianDriver {
   std::unique_ptr<brian::Brian> brian_;
   const airboard::BrianMapping mapping_{airboard::BrianMappingParams{}};
   double last_speed_ = 0.0, last_jog_ = 0.0;
-};
-
-/// Differential odometry from the encoder ticks (the AIRBoard's encoders).
-class EncoderOdometry {
- public:
-  EncoderOdometry(double wheel_radius, double track, int ticks_per_rev)
-      : k_(2.0 * M_PI * wheel_radius / ticks_per_rev), track_(track) {}
-  void update(const std::vector<std::int64_t>& ticks) {
-    if (ticks.size() < 2) return;
-    if (!prev_.empty()) {
-      const double dl = static_cast<double>(ticks[0] - prev_[0]) * k_;
-      const double dr = static_cast<double>(ticks[1] - prev_[1]) * k_;
-      const double ds = 0.5 * (dl + dr), dth = (dr - dl) / track_;
-      pose_ = pose_ * common::exp_twist(ds, 0.0, dth, 1.0);
-      travelled_ += std::abs(ds) + 0.5 * track_ * std::abs(dth);
-    }
-    prev_ = ticks;
-  }
-  const Pose2D& pose() const { return pose_; }
-  double travelled() const { return travelled_; }
-
- private:
-  double k_, track_;
-  std::vector<std::int64_t> prev_;
-  Pose2D pose_;
-  double travelled_ = 0.0;
 };
 
 /// MUREA tracking on the landmark percepts, predicted by the encoders.
@@ -289,21 +265,10 @@ struct FollowMeSession::Impl {
   }
 
   // Mr. BRIAN's obstacle sectors hold what the map does not explain (people):
-  // an echo within kMapped of the range the map predicts from the
-  // localizer's pose is a wall or an exhibit, which SPIKE's plan already
-  // keeps clear of, and reads as no echo. Roby's avoidance rules, written
-  // for open ground, would otherwise refuse to turn into a 1 m door.
-  // Nearer than kTooClose every echo counts (the FollowVisitor goals are
-  // not planned by SPIKE).
+  // unmapped_echo.h.
   void unmapped_echoes(const std::vector<double>& ranges, double now) {
-    constexpr double kMapped = 0.25;  // m
-    constexpr double kTooClose = 0.3; // m: nearer than this, a wall is an obstacle again
-    for (std::size_t i = 0; i < ranges.size() && i < rc.sensors.sonars.size(); ++i) {
-      const sim::SonarConfig& s = rc.sensors.sonars[i];
-      const double expected = sim::sonar_range(known, {}, estimate, s);
-      const bool mapped = ranges[i] > kTooClose && (std::abs(ranges[i] - expected) < kMapped || ranges[i] > expected);
-      sectors.set_range(i, mapped ? s.max_range : ranges[i], now);
-    }
+    for (std::size_t i = 0; i < ranges.size() && i < rc.sensors.sonars.size(); ++i)
+      sectors.set_range(i, unmapped_range(known, estimate, rc.sensors.sonars[i], ranges[i]), now);
   }
 
   // One guide cycle: the visitor decides, the guide decides, Mr. BRIAN drives.

@@ -4,11 +4,14 @@
 // ~real_time_factor, and publishes /clock, ground truth, the simulated
 // devices of every robot and rviz markers, all stamped with sim time.
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <thread>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/PointStamped.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <tf2_ros/static_transform_broadcaster.h>
@@ -16,6 +19,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "mrt_common/parse_error.h"
+#include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_sim/simulator.h"
 #include "mrt_sim/world.h"
@@ -48,6 +52,18 @@ class SimNode {
     dynamic_markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
     for (std::size_t i = 0; i < sim_.robots().size(); ++i)
       robots_.push_back(std::make_unique<RobotInterface>(nh, sim_, i, opt_));
+    // Movers steered from outside (a visitor's behaviour model, FollowMe):
+    // <mover>/goal walks it straight to (x, y) at z m/s; <mover>/ground_truth
+    // is where it is.
+    for (std::size_t i = 0; i < sim_.world().movers.size(); ++i) {
+      const std::string name = sim_.world().movers[i].name;
+      mover_goal_subs_.push_back(nh.subscribe<geometry_msgs::PointStamped>(
+          name + "/goal", 5, [this, i](const geometry_msgs::PointStamped::ConstPtr& m) {
+            if (std::isfinite(m->point.x) && std::isfinite(m->point.y) && std::isfinite(m->point.z))
+              sim_.steer_mover(i, {m->point.x, m->point.y}, m->point.z);
+          }));
+      mover_truth_pubs_.push_back(nh.advertise<nav_msgs::Odometry>(name + "/ground_truth", 5));
+    }
 
     std::vector<geometry_msgs::TransformStamped> fixed;
     for (const auto& r : robots_) r->static_transforms(fixed);
@@ -93,6 +109,7 @@ class SimNode {
       tfs.clear();
       for (auto& r : robots_) r->publish(stamp, gt, path, tfs);
       if (gt && match_if_) match_if_->publish_ball(stamp);
+      if (gt) publish_movers(stamp);
       if (!tfs.empty()) tf_.sendTransform(tfs);
       if (steps_ % marker_every_ == 0 && dynamic_markers_pub_.getNumSubscribers() > 0)
         dynamic_markers_pub_.publish(
@@ -117,6 +134,17 @@ class SimNode {
   }
 
  private:
+  void publish_movers(const ros::Time& stamp) {
+    const auto& movers = sim_.world().movers;
+    for (std::size_t i = 0; i < movers.size() && i < mover_truth_pubs_.size(); ++i) {
+      if (mover_truth_pubs_[i].getNumSubscribers() == 0) continue;
+      const Mover& m = movers[i];
+      mover_truth_pubs_[i].publish(mrt::ros_common::to_odometry(
+          {m.position.x, m.position.y, std::atan2(m.velocity.y, m.velocity.x)}, m.velocity.x, m.velocity.y, 0.0,
+          opt_.world_frame, m.name, stamp));
+    }
+  }
+
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
     const auto now = SteadyClock::now();
     const double wall = seconds_between(window_wall_, now);
@@ -141,6 +169,8 @@ class SimNode {
   std::unique_ptr<Match> match_;
   std::unique_ptr<MatchInterface> match_if_;
   std::vector<std::unique_ptr<RobotInterface>> robots_;
+  std::vector<ros::Subscriber> mover_goal_subs_;
+  std::vector<ros::Publisher> mover_truth_pubs_;
   ros::Publisher clock_pub_, world_markers_pub_, dynamic_markers_pub_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;

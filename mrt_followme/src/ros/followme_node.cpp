@@ -3,8 +3,6 @@
 // guide, Mr. BRIAN with Roby's rules) paced against the wall clock, with
 // /clock, tf, rviz markers, the tour dialogue (service and interactive
 // markers on the exhibits) and the tour's progress.
-#include <interactive_markers/interactive_marker_server.h>
-#include <interactive_markers/menu_handler.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
@@ -17,6 +15,7 @@
 #include <vector>
 
 #include "markers.h"
+#include "tour_markers.h"
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_followme/SetTour.h"
@@ -51,65 +50,6 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
       .get("frame", n.frame);
   return n;
 }
-
-/// The tour dialogue in rviz: click exhibits to choose them in order, then
-/// "Start this tour" from any exhibit's menu.
-class TourMarkers {
- public:
-  TourMarkers(FollowMeSession& s, const std::string& frame) : s_(s), server_("tour") {
-    start_ = menu_.insert("Start this tour", [this](const auto&) { start(); });
-    menu_.insert("Clear the choice", [this](const auto&) { chosen_.clear(); });
-    for (const auto& p : s.world().posts) {
-      if (p.membership_class != "Exhibit") continue;
-      visualization_msgs::InteractiveMarker im;
-      im.header.frame_id = frame;
-      im.name = p.name;
-      im.description = p.name + " (click: add to the tour)";
-      im.pose.position.x = p.center.x;
-      im.pose.position.y = p.center.y;
-      im.pose.orientation.w = 1.0;
-      im.scale = 1.0;
-      visualization_msgs::InteractiveMarkerControl c;
-      c.interaction_mode = visualization_msgs::InteractiveMarkerControl::BUTTON;
-      c.always_visible = true;
-      visualization_msgs::Marker m;
-      m.type = visualization_msgs::Marker::CYLINDER;
-      m.scale.x = m.scale.y = 2 * p.radius + 0.2;
-      m.scale.z = 0.05;
-      m.color.r = 1.0;
-      m.color.g = 0.8;
-      m.color.a = 0.5;
-      m.pose.orientation.w = 1.0;
-      c.markers.push_back(m);
-      im.controls.push_back(c);
-      server_.insert(im, [this](const auto& fb) {
-        if (fb->event_type == visualization_msgs::InteractiveMarkerFeedback::BUTTON_CLICK) {
-          chosen_.push_back(fb->marker_name);
-          ROS_INFO("tour choice: %zu exhibits, last %s", chosen_.size(), fb->marker_name.c_str());
-        }
-      });
-      menu_.apply(server_, p.name);
-    }
-    server_.applyChanges();
-  }
-
- private:
-  void start() {
-    const std::string bad = s_.set_tour(chosen_);
-    if (bad.empty()) {
-      ROS_INFO("new tour of %zu exhibits", chosen_.size());
-    } else {
-      ROS_WARN("tour refused: %s", bad.c_str());
-    }
-    chosen_.clear();
-  }
-
-  FollowMeSession& s_;
-  interactive_markers::InteractiveMarkerServer server_;
-  interactive_markers::MenuHandler menu_;
-  interactive_markers::MenuHandler::EntryHandle start_ = 0;
-  std::vector<std::string> chosen_;
-};
 
 /// What the node publishes every cycle: clock, poses, markers, status, plans.
 class Outputs {
@@ -199,7 +139,10 @@ int run(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
                                                   ROS_WARN("close_door: %s", e.what());
                                                 }
                                               });
-  TourMarkers tour(session, opt.frame);
+  std::vector<glue::ExhibitRing> rings;
+  for (const auto& p : session.world().posts)
+    if (p.membership_class == "Exhibit") rings.push_back({p.name, p.center.x, p.center.y, p.radius});
+  glue::TourMarkers tour(rings, opt.frame, [&](const std::vector<std::string>& t) { return session.set_tour(t); });
   out.museum(session);
   ros::WallTime start = ros::WallTime::now();
   bool done = false;

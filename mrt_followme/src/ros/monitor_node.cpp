@@ -1,0 +1,139 @@
+// followme_monitor_node: the measures of the distributed FollowMe in
+// simulation, from ground truth (sim_node) and what the robot published:
+// MUREA's error (against the truth at the pose's stamp), the closest a person came to the robot (footprints), the
+// longest time the visitor was out of the camera's sight (no Person
+// percept of its colour). When the guide node reports the tour over
+// (tour_result) it publishes the summary (tour_summary, latched) in the
+// format of the in-process followme_node, which ./scripts/demo.sh prints.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+#include <cmath>
+#include <deque>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "markers.h"
+#include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/params.h"
+#include "mrt_msgs/Percept.h"
+
+namespace {
+
+using mrt::common::Pose2D;
+
+class Monitor {
+ public:
+  Monitor(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+    mrt::ros_common::ParamReader p(pnh);
+    std::string robot = "robot1";
+    std::vector<std::string> people{"guest", "visitor1", "visitor2"};
+    p.get("robot", robot)
+        .get("people", people)
+        .get("visitor_color", color_)
+        .get_positive("robot_radius", robot_radius_)
+        .get_positive("person_radius", person_radius_);
+    truth_sub_ = nh.subscribe(robot + "/ground_truth", 20, &Monitor::on_truth, this);
+    pose_sub_ = nh.subscribe(robot + "/pose", 20, &Monitor::on_pose, this);
+    percept_sub_ = nh.subscribe(robot + "/percepts", 20, &Monitor::on_percepts, this);
+    result_sub_ = nh.subscribe(robot + "/tour_result", 1, &Monitor::on_result, this);
+    for (const auto& n : people)
+      people_subs_.push_back(nh.subscribe<nav_msgs::Odometry>(
+          n + "/ground_truth", 5, [this, n](const nav_msgs::Odometry::ConstPtr& m) { on_person(n, *m); }));
+    summary_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
+    measures_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_measures", 5);
+    timer_ = nh.createTimer(ros::Duration(1.0), &Monitor::report, this);
+  }
+
+ private:
+  void on_truth(const nav_msgs::Odometry& m) {
+    truth_ = mrt::ros_common::to_pose2d(m.pose.pose);
+    history_.push_back({m.header.stamp.toSec(), *truth_});
+    while (history_.size() > 1 && history_.back().first - history_.front().first > 2.0) history_.pop_front();
+  }
+
+  /// MUREA's pose against the truth at its own stamp (the pose of a camera
+  /// frame arrives later than the truth of that moment).
+  void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
+    if (history_.empty()) return;
+    const double t = m.header.stamp.toSec();
+    const auto* best = &history_.front();
+    for (const auto& h : history_)
+      if (std::abs(h.first - t) < std::abs(best->first - t)) best = &h;
+    const Pose2D e = mrt::ros_common::to_pose2d(m.pose.pose);
+    r_.max_pose_error = std::max(r_.max_pose_error, std::hypot(e.x - best->second.x, e.y - best->second.y));
+  }
+
+  void on_person(const std::string& name, const nav_msgs::Odometry& m) {
+    if (!truth_) return;
+    const double gap = std::hypot(m.pose.pose.position.x - truth_->x, m.pose.pose.position.y - truth_->y) -
+                       robot_radius_ - person_radius_;
+    if (gap < r_.min_person_gap) {
+      r_.min_person_gap = gap;
+      r_.nearest_person = name;
+    }
+  }
+
+  void on_percepts(const mrt_msgs::Percept& m) {
+    const double t = m.header.stamp.toSec();
+    bool seen = false;
+    for (const auto& o : m.objects) {
+      if (o.membership_class != "Person") continue;
+      for (const auto& a : o.attributes)
+        if (a.name == "color" && a.symbol == color_) seen = true;
+    }
+    if (first_ < 0) first_ = last_seen_ = t;
+    if (seen) last_seen_ = t;
+    r_.max_unseen = std::max(r_.max_unseen, t - last_seen_);
+  }
+
+  void on_result(const std_msgs::String& m) {
+    // "completed yes | time 179.6 | wanders 1 | visited a,b,c"
+    std::stringstream ss(m.data);
+    std::string word, sep, completed, visited;
+    ss >> word >> completed >> sep >> word >> r_.time >> sep >> word >> r_.wanders >> sep >> word >> visited;
+    r_.completed = completed == "yes";
+    r_.visited.clear();
+    std::stringstream vs(visited);
+    for (std::string v; std::getline(vs, v, ',');) r_.visited.push_back(v);
+    std_msgs::String s;
+    s.data = mrt::followme::ros_glue::summary(r_);
+    summary_pub_.publish(s);
+    ROS_INFO("tour %s:\n%s", r_.completed ? "completed" : "ended", s.data.c_str());
+  }
+
+  void report(const ros::TimerEvent&) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "out_of_sight %.2f | pose_error %.3f | person_gap %.2f", r_.max_unseen,
+                  r_.max_pose_error, r_.min_person_gap);
+    std_msgs::String s;
+    s.data = buf;
+    measures_pub_.publish(s);
+  }
+
+  std::string color_ = "purple";
+  double robot_radius_ = 0.25, person_radius_ = 0.25, first_ = -1.0, last_seen_ = 0.0;
+  std::optional<Pose2D> truth_;
+  std::deque<std::pair<double, Pose2D>> history_;  // the last 2 s of ground truth
+  mrt::followme::FollowMeResult r_;
+  ros::Subscriber truth_sub_, pose_sub_, percept_sub_, result_sub_;
+  std::vector<ros::Subscriber> people_subs_;
+  ros::Publisher summary_pub_, measures_pub_;
+  ros::Timer timer_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "followme_monitor");
+  ros::NodeHandle nh, pnh("~");
+  return mrt::ros_common::run_node([&] {
+    Monitor m(nh, pnh);
+    ros::spin();
+    return 0;
+  });
+}
