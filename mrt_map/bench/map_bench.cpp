@@ -3,6 +3,7 @@
 // simulation's ground truth; then the full-cycle time of 50 objects x 5
 // robots. Prints `name: value unit` lines (scripts/bench.sh).
 //   map_bench [minutes=10] [seed=1] [model=config/robocup.yaml] [--team-rate 10] [--team-latency 0.05]
+//             [--scenario team|random|both] [--no-cycle-time]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -388,12 +389,17 @@ int main(int argc, char** argv) {
   app.add_option("--team-rate", team_rate, "Hz, team exchange (default 10)")->check(CLI::PositiveNumber);
   app.add_option("--team-latency", g_team_latency, "s, network delay of the team exchange (default 0.05)")
       ->check(CLI::NonNegativeNumber);
+  std::string scenario = "both";
+  app.add_option("--scenario", scenario, "team (team play), random (the first scenario) or both (default)")
+      ->check(CLI::IsMember({"team", "random", "both"}));
+  bool no_cycle = false;
+  app.add_flag("--no-cycle-time", no_cycle, "skip the 50 x 5 cycle-time measurement");
   const int rc = mrt::cli::parse_cli(app, argc, argv);
   if (rc >= 0) return rc;
   g_team_period = 1.0 / team_rate;
   const ConceptualModel model = ConceptualModel::load(model_file);
-  cycle_time(model);
-  team_run(model, minutes, seed, true);
-  team_run(model, minutes, seed, false);  // the first scenario's figures, for comparison
+  if (!no_cycle) cycle_time(model);
+  if (scenario != "random") team_run(model, minutes, seed, true);
+  if (scenario != "team") team_run(model, minutes, seed, false);  // the first scenario's figures, for comparison
   return 0;
 }

@@ -36,12 +36,27 @@ class ModelLoader {
 
   void load(const std::string& text) {
     const YAML::Node root = r_.load(text);
-    r_.map(root, "model", {"classes", "classifier", "tracker", "team", "crisp"});
+    r_.map(root, "model", {"classes", "classifier", "tracker", "team", "crisp", "world"});
     classes(r_.required(root, "classes", "model"));
     if (root["classifier"]) classifier(root["classifier"]);
     if (root["tracker"]) tracker(root["tracker"]);
     if (root["team"]) team(root["team"]);
     if (root["crisp"]) crisp(root["crisp"]);
+    if (root["world"]) world(root["world"]);
+  }
+
+  void world(const YAML::Node& n) {
+    r_.map(n, "world", {"x_min", "x_max", "y_min", "y_max"});
+    WorldBounds& w = m_.world_;
+    for (const char* k : {"x_min", "x_max", "y_min", "y_max"})
+      if (!n[k]) r_.fail(n, std::string("missing '") + k + "' in 'world'");
+    w.x_min = r_.number(n, "x_min", 0.0);
+    w.x_max = r_.number(n, "x_max", 0.0);
+    w.y_min = r_.number(n, "y_min", 0.0);
+    w.y_max = r_.number(n, "y_max", 0.0);
+    if (!(w.x_min < w.x_max)) r_.fail(n["x_max"], "expected 'x_max' > 'x_min' in 'world'");
+    if (!(w.y_min < w.y_max)) r_.fail(n["y_max"], "expected 'y_max' > 'y_min' in 'world'");
+    w.set = true;
   }
 
  private:
@@ -64,7 +79,8 @@ class ModelLoader {
       const std::string what = m_.classes_[i].name;
       if (b.IsNull()) continue;
       r_.map(b, what, {"parent", "attributes", "motion", "accel_noise", "init_speed_sigma", "default_sigma",
-                       "refined_by", "velocity_tau", "drop_after", "max_sigma", "max_count"});
+                       "refined_by", "velocity_tau", "drop_after", "max_sigma", "max_count",
+                       "quiet_accel_noise", "quiet_nis"});
       if (const YAML::Node p = b["parent"]) {
         const int pi = m_.find(r_.string(p, "parent"));
         if (pi < 0) r_.fail(p, "unknown parent class '" + p.Scalar() + "' of '" + what + "'");
@@ -97,6 +113,8 @@ class ModelLoader {
       c.velocity_tau = p.velocity_tau;
       c.drop_after = p.drop_after;
       c.max_sigma = p.max_sigma;
+      c.quiet_accel_noise = p.quiet_accel_noise;
+      c.quiet_nis = p.quiet_nis;
     }
     if (b.IsNull()) return;
     if (const YAML::Node mo = b["motion"]) {
@@ -111,6 +129,8 @@ class ModelLoader {
     c.velocity_tau = r_.non_negative(b, "velocity_tau", c.velocity_tau);
     c.drop_after = r_.non_negative(b, "drop_after", c.drop_after);
     c.max_sigma = r_.non_negative(b, "max_sigma", c.max_sigma);
+    c.quiet_accel_noise = r_.non_negative(b, "quiet_accel_noise", c.quiet_accel_noise);
+    c.quiet_nis = r_.non_negative(b, "quiet_nis", c.quiet_nis);
     if (const YAML::Node mc = b["max_count"]) {
       const double v = r_.non_negative(b, "max_count", 0.0);
       if (v != std::floor(v) || v > 1000.0) r_.fail(mc, "expected a whole number <= 1000 for 'max_count'");

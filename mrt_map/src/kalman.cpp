@@ -20,8 +20,8 @@ Mat4 transition(const ClassDef& c, double dt) {
   return F;
 }
 
-Mat4 process_noise(const ClassDef& c, double dt) {
-  const double q = c.accel_noise * c.accel_noise;
+Mat4 process_noise(const ClassDef& c, double dt, double accel_noise) {
+  const double sa = accel_noise >= 0.0 ? accel_noise : c.accel_noise, q = sa * sa;
   Mat4 Q = Mat4::Zero();
   if (c.motion == MotionModel::kConstantVelocity) {
     double a = q * dt * dt * dt / 3.0, b = q * dt * dt / 2.0, d = q * dt;
@@ -54,13 +54,13 @@ Estimate initialize(const Observation& o, const ClassDef& c) {
   return e;
 }
 
-Estimate predict(const Estimate& e, const ClassDef& c, double t) {
+Estimate predict(const Estimate& e, const ClassDef& c, double t, double accel_noise) {
   if (!(t > e.stamp)) return e;
   const double dt = t - e.stamp;
   const Mat4 F = transition(c, dt);
   Estimate p;
   p.x = F * e.x;
-  p.P = F * e.P * F.transpose() + process_noise(c, dt);
+  p.P = F * e.P * F.transpose() + process_noise(c, dt, accel_noise);
   p.stamp = t;
   return p;
 }

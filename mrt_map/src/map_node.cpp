@@ -108,7 +108,7 @@ class MapNode {
     const auto& after = world_.counters();
     if (after.accepted - before.accepted < p.objects.size())
       ROS_WARN_THROTTLE(5.0, "map_node: dropped %zu of %zu objects of a percept from %s (unknown class, non-finite, "
-                        "stale or unmatched; see diagnostics)",
+                        "stale, unmatched or outside the world; see diagnostics)",
                         p.objects.size() - static_cast<std::size_t>(after.accepted - before.accepted),
                         p.objects.size(), p.sensor.c_str());
   }
@@ -167,7 +167,8 @@ class MapNode {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
     const auto& c = world_.counters();
     const std::uint64_t dropped =
-        c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.stale_team + no_pose_ + bad_anchors_;
+        c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.stale_team + c.outside_world + no_pose_ +
+        bad_anchors_;
     s.summary(dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK,
               dropped > 0 ? "input dropped (see counters)" : "ok");
     s.add("anchors", world_.tracker().anchors().size());
@@ -179,6 +180,7 @@ class MapNode {
     s.add("dropped no position", c.no_position);
     s.add("dropped below matching threshold", c.unmatched);
     s.add("dropped stale", c.stale);
+    s.add("dropped outside the world", c.outside_world);
     s.add("dropped no robot pose", no_pose_);
     s.add("teammate models", team_models_);
     s.add("teammate anchors stale", c.stale_team);

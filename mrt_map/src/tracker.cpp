@@ -33,12 +33,20 @@ Anchor& Tracker::create(double now, int class_index, double degree) {
   return anchors_.back();
 }
 
+const Estimate& Tracker::own_estimate(const Anchor& a) const {
+  // The quiet filter's extrapolation is over-confident across an unseen
+  // manoeuvre: it stands for the object only while the own sensors see it.
+  return a.has_quiet && a.local_last_seen >= prev_now_ ? a.quiet : a.local;
+}
+
 void Tracker::cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote) {
+  prev_now_ = now_;
   now_ = now;
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
     a.fused = predict(a.fused, c, now);
     if (a.has_local) a.local = predict(a.local, c, now);
+    if (a.has_quiet) a.quiet = predict(a.quiet, c, now, c.quiet_accel_noise);
     a.remote.clear();
   }
   seen_.clear();
@@ -86,6 +94,8 @@ void Tracker::coalesce() {
       if (gone.has_local && (!keep.has_local || gone.local_last_seen > keep.local_last_seen)) {
         keep.local = gone.local;
         keep.has_local = true;
+        keep.quiet = gone.quiet;
+        keep.has_quiet = gone.has_quiet;
         keep.local_hits = std::max(keep.local_hits, gone.local_hits);
         keep.local_last_seen = gone.local_last_seen;
       }
@@ -187,6 +197,7 @@ void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
     a->local = initialize(o, c);
     a->local = predict(a->local, c, now);
     a->has_local = true;
+    a->has_quiet = false;
     a->local_hits = 0;
     if (a->hits == 0) a->fused = a->local;
   } else {
@@ -198,6 +209,18 @@ void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
       a->local.P.topLeftCorner<2, 2>() += o.R;
     }
     update(a->local, o.z, o.R);
+  }
+  if (c.quiet_accel_noise > 0.0 && c.motion == MotionModel::kConstantVelocity) {
+    // The quiet filter: updated while the observations fit it; at a
+    // manoeuvre (or at the start) it restarts from the main filter, which
+    // has followed the manoeuvre with its larger process noise.
+    const double nis_max = c.quiet_nis > 0.0 ? c.quiet_nis : model_.tracker().gate;
+    if (a->has_quiet && mahalanobis2(a->quiet, o.z, o.R) <= nis_max) {
+      update(a->quiet, o.z, o.R);
+    } else {
+      a->quiet = a->local;
+      a->has_quiet = true;
+    }
   }
   ++a->local_hits;
   a->local_last_seen = a->last_seen = now;
@@ -322,7 +345,7 @@ void Tracker::fuse(double now) {
   const bool ci = model_.team().covariance_intersection;
   for (Anchor& a : anchors_) {
     std::vector<const Estimate*> parts;
-    if (a.has_local) parts.push_back(&a.local);
+    if (a.has_local) parts.push_back(&own_estimate(a));
     for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
     if (parts.empty()) continue;
     Estimate f = *parts[0];
@@ -354,8 +377,10 @@ void Tracker::life_cycle(double now) {
       if (!keep_lost && a.status == AnchorStatus::kCoasting && age > drop_after) a.status = AnchorStatus::kDropped;
       if (!keep_lost && position_sigma_max(a.fused.P) > max_sigma) a.status = AnchorStatus::kDropped;
     }
+    // Predicted out of the world (model `world:`): nothing real is there.
+    if (!model_.world().contains(a.fused.x(0), a.fused.x(1))) a.status = AnchorStatus::kDropped;
     if (a.has_local && now - a.local_last_seen > drop_after) {
-      a.has_local = false;
+      a.has_local = a.has_quiet = false;
       a.local_hits = 0;
     }
   }
@@ -402,7 +427,7 @@ std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
     t.id = a.id;
     t.class_index = a.class_index;
     t.degree = a.degree;
-    t.estimate = a.local;
+    t.estimate = own_estimate(a);
     t.last_seen = a.local_last_seen;
     for (const std::string& s : a.sources)
       if (s.rfind(robot + "/", 0) == 0) t.sensors.insert(s);

@@ -33,6 +33,10 @@ int WorldModel::add_percept(const std::vector<PerceptObject>& objects, const Rob
       case Rejection::kNone: break;
     }
     if (!obs) continue;
+    if (!model_.world().contains(obs->z.x(), obs->z.y())) {
+      ++counters_.outside_world;
+      continue;
+    }
     pending_.push_back(std::move(*obs));
     ++counters_.accepted;
     ++n;
@@ -59,8 +63,9 @@ void WorldModel::update(double now) {
     }
     for (RemoteTrack t : m.tracks) {
       t.robot = robot;
-      if (merger_.compensate(t, now)) remote.push_back(std::move(t));
-      else ++counters_.stale_team;
+      if (!merger_.compensate(t, now)) ++counters_.stale_team;
+      else if (!model_.world().contains(t.estimate.x(0), t.estimate.x(1))) ++counters_.outside_world;
+      else remote.push_back(std::move(t));
     }
   }
   tracker_.cycle(now, merged, std::move(remote));

@@ -120,7 +120,7 @@ int run(const Args& args) {
   if (no_pose) std::cerr << ", " << no_pose << " percepts without a pose dropped";
   for (const auto& [name, w] : team) {
     const auto& c = w->counters();
-    const auto dropped = c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale;
+    const auto dropped = c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.outside_world;
     if (dropped) std::cerr << ", " << name << ": " << dropped << " objects dropped";
   }
   std::cerr << "\n";

@@ -41,6 +41,11 @@ struct ClassDef {
                                  // Ornstein-Uhlenbeck); 0 = constant velocity, no decay
   double drop_after = 0.0;       // s, per-class tracker.drop_after (0 = the tracker's)
   double max_sigma = 0.0;        // m, per-class tracker.max_sigma (0 = the tracker's)
+  double quiet_accel_noise = 0.0;  // CV only, m/s^2: a second, quiet own filter with this
+                                   // process noise gives the estimate between manoeuvres (0 = off)
+  double quiet_nis = 0.0;          // chi-square: an own observation farther than this from the
+                                   // quiet filter is a manoeuvre: it restarts from the main one
+                                   // (0 = tracker.gate)
   bool refined_by_teammate_pose = false;  // a Robot becomes this class near a teammate
   int max_count = 0;             // cardinality: at most this many objects of the class
                                  // (and its subclasses) exist; 0 = unknown. Not inherited.
@@ -74,6 +79,15 @@ struct TeamOptions {
   double gate = 13.82;       // chi-square 2 dof, 99.9 %
   double extra_sigma = 0.05; // m, added to a teammate's position sigma (its localisation bias)
   bool covariance_intersection = true;  // false: independent (Kalman) fusion
+};
+
+/// The extent of the world (e.g. the field with its run-off area): no
+/// object is outside it. Observations and teammates' anchors outside are
+/// dropped (counted), an anchor predicted outside is dropped.
+struct WorldBounds {
+  bool set = false;
+  double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;
+  bool contains(double x, double y) const { return !set || (x >= x_min && x <= x_max && y >= y_min && y <= y_max); }
 };
 
 /// One crisp datum for Mr. BRIAN: either a quantity of the selected anchor
@@ -110,6 +124,7 @@ class ConceptualModel {
   const ClassifierOptions& classifier() const { return classifier_; }
   const TrackerOptions& tracker() const { return tracker_; }
   const TeamOptions& team() const { return team_; }
+  const WorldBounds& world() const { return world_; }
   const std::vector<CrispEntry>& crisp() const { return crisp_; }
 
  private:
@@ -119,6 +134,7 @@ class ConceptualModel {
   ClassifierOptions classifier_;
   TrackerOptions tracker_;
   TeamOptions team_;
+  WorldBounds world_;
   std::vector<CrispEntry> crisp_;
 };
 

@@ -15,14 +15,15 @@ Mat4 transition(const ClassDef& c, double dt);
 /// Process noise over dt. Constant velocity: continuous white acceleration
 /// of spectral density q = accel_noise^2: q*[dt^3/3 I, dt^2/2 I; dt^2/2 I, dt I].
 /// Static: q*dt on the position only (a slow drift), none on the velocity.
-Mat4 process_noise(const ClassDef& c, double dt);
+/// `accel_noise` >= 0 replaces the class's (the quiet filter's).
+Mat4 process_noise(const ClassDef& c, double dt, double accel_noise = -1.0);
 
 /// A new estimate from a first observation: velocity 0 with variance
 /// init_speed_sigma^2 (CV) or 1e-6 (static).
 Estimate initialize(const Observation& o, const ClassDef& c);
 
 /// Predicts `e` to time t (no-op when t <= e.stamp).
-Estimate predict(const Estimate& e, const ClassDef& c, double t);
+Estimate predict(const Estimate& e, const ClassDef& c, double t, double accel_noise = -1.0);
 
 /// Squared Mahalanobis distance of a position z (covariance R) from the
 /// estimate's position: y' (H P H' + R)^-1 y.

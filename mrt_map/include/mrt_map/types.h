@@ -87,6 +87,8 @@ struct Anchor {
   Estimate local;
   int local_hits = 0;
   double local_last_seen = 0.0;
+  bool has_quiet = false;    // the quiet own filter (class quiet_accel_noise), restarted
+  Estimate quiet;            // from `local` at each manoeuvre; the own estimate when set
   int hits = 0;              // cycles with support (own or teammates')
   double first_seen = 0.0;
   double last_seen = 0.0;    // own or teammates'

@@ -29,7 +29,7 @@ struct CrispDatum {
 /// What was dropped, by reason (diagnostics).
 struct DropCounters {
   std::uint64_t accepted = 0, unknown_class = 0, non_finite = 0, no_position = 0, unmatched = 0, stale = 0,
-                stale_team = 0;
+                stale_team = 0, outside_world = 0;  // outside_world: own or teammates' (model `world:`)
 };
 
 class WorldModel {
