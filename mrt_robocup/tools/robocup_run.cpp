@@ -8,6 +8,42 @@
 #include "mrt_common/cli.h"
 #include "mrt_robocup/session_files.h"
 
+namespace {
+
+using namespace mrt::robocup;
+
+// The tests' opponents: a goalkeeper at (8.4, 0) and a static defender at (5, 0).
+void use_keeper_and_static(TeamSessionOptions& o) {
+  o.replace_opponents = true;
+  mrt::sim::OpponentConfig keeper, back;
+  keeper.name = "opp_keeper";
+  keeper.role = "goalkeeper";
+  keeper.home = {8.4, 0.0};
+  keeper.speed = 1.5;
+  back.name = "opp_back";
+  back.role = "static";
+  back.home = {5.0, 0.0};
+  o.opponents = {keeper, back};
+}
+
+void print_trace(const TeamSession& s, int trace_robot) {
+  std::printf("t %6.1f ball %5.2f %5.2f holder %d score %d-%d |", s.time(), s.ball().x, s.ball().y, s.holder(),
+              s.stats().score[0], s.stats().score[1]);
+  for (std::size_t i = 0; i < s.robots(); ++i)
+    std::printf(" %s %5.2f %5.2f %4.0f %s v%.2f w%.2f |", s.robot_name(i).c_str(), s.pose(i).x, s.pose(i).y,
+                s.pose(i).theta * 57.29578, s.job(i).c_str(), s.command(i).vx, s.command(i).omega);
+  std::printf("\n");
+  if (trace_robot >= 0 && static_cast<std::size_t>(trace_robot) < s.robots()) {
+    const PlayerOutput& out = s.output(static_cast<std::size_t>(trace_robot));
+    std::printf("   behaviours: %s\n   crisp:", out.behaviors.c_str());
+    for (const auto& c : out.crisp)
+      if (c.value != 0.0) std::printf(" %s=%.0f", c.name.c_str(), c.value);
+    std::printf("\n");
+  }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace mrt::robocup;
   TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_SIM_WORLDS);
@@ -38,18 +74,7 @@ int main(int argc, char** argv) {
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
     resolve_world_or_match(o);
-    if (keeper_and_static) {
-      o.replace_opponents = true;
-      mrt::sim::OpponentConfig keeper, back;
-      keeper.name = "opp_keeper";
-      keeper.role = "goalkeeper";
-      keeper.home = {8.4, 0.0};
-      keeper.speed = 1.5;
-      back.name = "opp_back";
-      back.role = "static";
-      back.home = {5.0, 0.0};
-      o.opponents = {keeper, back};
-    }
+    if (keeper_and_static) use_keeper_and_static(o);
     TeamSession s(o);
     const auto t0 = std::chrono::steady_clock::now();
     double next = 0.0;
@@ -64,19 +89,7 @@ int main(int argc, char** argv) {
       }
       if (trace <= 0.0 || s.time() < next) continue;
       next += trace;
-      std::printf("t %6.1f ball %5.2f %5.2f holder %d score %d-%d |", s.time(), s.ball().x, s.ball().y, s.holder(),
-                  s.stats().score[0], s.stats().score[1]);
-      for (std::size_t i = 0; i < s.robots(); ++i)
-        std::printf(" %s %5.2f %5.2f %4.0f %s v%.2f w%.2f |", s.robot_name(i).c_str(), s.pose(i).x, s.pose(i).y,
-                    s.pose(i).theta * 57.29578, s.job(i).c_str(), s.command(i).vx, s.command(i).omega);
-      std::printf("\n");
-      if (trace_robot >= 0 && static_cast<std::size_t>(trace_robot) < s.robots()) {
-        const PlayerOutput& out = s.output(static_cast<std::size_t>(trace_robot));
-        std::printf("   behaviours: %s\n   crisp:", out.behaviors.c_str());
-        for (const auto& c : out.crisp)
-          if (c.value != 0.0) std::printf(" %s=%.0f", c.name.c_str(), c.value);
-        std::printf("\n");
-      }
+      print_trace(s, trace_robot);
     }
     const double cpu = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const TeamStats& st = s.stats();
