@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
     std::unique_ptr<mrt::sim::MatchConfig> match;
     try {
       world = mrt::sim::load_world(opt.world_file);
-      apply_team_options(opt, world);  // ~robots, ~camera_rate
+      apply_team_options(opt, world);  // ~robots, ~camera_rate, ~seed
       if (!opt.match_file.empty()) {
         match = std::make_unique<mrt::sim::MatchConfig>(mrt::sim::load_match_config(opt.match_file));
         mrt::sim::setup_match_world(*match, world);

@@ -56,7 +56,9 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get("joint_state_robots", o.joint_state_robots)
       .get("description_robots", o.description_robots)
       .get("robots", o.robots)
-      .get_non_negative("camera_rate", o.camera_rate);
+      .get_non_negative("camera_rate", o.camera_rate)
+      .get("seed", o.seed);
+  ParamReader::check(o.seed >= -1, "seed", "an integer >= 0, or -1 for the world file's");
   ParamReader::check(!o.world_frame.empty() && valid_frame_name(o.world_frame), "world_frame",
                      "a non-empty frame name of [A-Za-z0-9_/]");
   ParamReader::check(valid_frame_name(o.frame_prefix), "frame_prefix", "characters of [A-Za-z0-9_/]");
@@ -81,6 +83,7 @@ void apply_team_options(const NodeOptions& o, World& world) {
   if (o.camera_rate > 0.0)
     for (RobotConfig& r : world.robots)
       if (r.sensors.camera.rate > 0.0) r.sensors.camera.rate = o.camera_rate;
+  if (o.seed >= 0) world.seed = static_cast<std::uint64_t>(o.seed);
 }
 
 }  // namespace mrt::sim::node
