@@ -1,0 +1,22 @@
+// Default file locations of the team session (source tree or install
+// space, given by the build) and the --world convenience: a match file
+// passed as --world means "that match on the field world beside it".
+// ROS-free.
+#pragma once
+
+#include <string>
+
+#include "mrt_robocup/team_session.h"
+
+namespace mrt::robocup {
+
+/// Options with the package's defaults under `package_root` (config/...)
+/// and mrt_sim's worlds under `sim_worlds` (msl_field.yaml, msl_match.yaml).
+TeamSessionOptions default_session_options(const std::string& package_root, const std::string& sim_worlds);
+
+/// If `o.world` is a match file (it has `opponents` or `referee` and no
+/// `robots`), it becomes o.match and the world msl_field.yaml of the same
+/// directory. Throws mrt::common::ParseError when the file does not parse.
+void resolve_world_or_match(TeamSessionOptions& o);
+
+}  // namespace mrt::robocup

@@ -1,0 +1,73 @@
+#include "mrt_robocup/player.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace mrt::robocup {
+
+airboard::BrianMappingParams mapping_for(const std::string& kinematics) {
+  if (kinematics == "differential") return airboard::BrianMappingParams::for_base(common::BaseType::kDifferential);
+  if (kinematics == "omni") return airboard::BrianMappingParams::for_base(common::BaseType::kOmni);
+  throw std::invalid_argument("kinematics: expected 'differential' or 'omni', got '" + kinematics + "'");
+}
+
+Player::Player(PlayerOptions o)
+    : o_(std::move(o)), mapping_(mapping_for(o_.kinematics)), assessor_(o_.situation) {
+  if (!(o_.max_speed > 0.0) || !(o_.max_omega > 0.0) || !(o_.carry_max_speed > 0.0) || !(o_.carry_max_omega > 0.0))
+    throw std::invalid_argument("speed limits must be positive");
+  brian_ = brian::Brian::from_path(o_.rule_base);
+}
+
+Player::~Player() = default;
+
+bool Player::playing(Referee r, bool play_without_referee) {
+  return r == Referee::kStart || (r == Referee::kNone && play_without_referee);
+}
+
+PlayerOutput Player::cycle(const PlayerInput& in) {
+  PlayerOutput out;
+  SituationInput si;
+  si.time = in.time;
+  si.pose = in.pose;
+  si.anchors = in.anchors;
+  si.coordination = in.coordination;
+  si.possession_known = in.possession_known;
+  si.possession = in.possession;
+  out.situation = assessor_.assess(si);
+  out.job = out.situation.job;
+  out.crisp = assessor_.crisp(out.situation, in.pose, in.coordination);
+  out.halted = !in.pose_valid || !playing(in.referee, o_.play_without_referee);
+  if (out.halted) return out;  // zero twist, no kick, ball handler off: before the rules
+
+  out.commands = brian_->run(out.crisp);
+  std::vector<std::pair<std::string, double>> named;
+  named.reserve(out.commands.size());
+  for (const brian::Command& c : out.commands) {
+    named.emplace_back(c.name, c.value);
+    if (c.name == o_.kick_name && std::isfinite(c.value) && c.value > 0.0 && in.time - last_kick_ >= o_.kick_cooldown) {
+      out.kick = true;
+      out.kick_strength = std::clamp(c.value, 0.0, 1.0);
+    }
+  }
+  if (const auto t = mapping_.to_twist(named)) out.twist = *t;
+  // The boundary's safety limits (the ball handler loses the ball beyond them).
+  const bool owned = out.situation.owned;
+  const double vmax = owned ? std::min(o_.max_speed, o_.carry_max_speed) : o_.max_speed;
+  const double wmax = owned ? std::min(o_.max_omega, o_.carry_max_omega) : o_.max_omega;
+  const double v = std::hypot(out.twist.vx, out.twist.vy);
+  if (v > vmax) {
+    out.twist.vx *= vmax / v;
+    out.twist.vy *= vmax / v;
+  }
+  out.twist.omega = std::clamp(out.twist.omega, -wmax, wmax);
+  if (out.kick) last_kick_ = in.time;
+  const Situation& s = out.situation;
+  out.dribble = !out.kick && s.ball_seen &&
+                std::hypot(s.ball.x - in.pose.x, s.ball.y - in.pose.y) <=
+                    o_.situation.body_radius + o_.situation.ball_radius + o_.dribble_distance;
+  return out;
+}
+
+}  // namespace mrt::robocup
