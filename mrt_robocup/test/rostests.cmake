@@ -4,12 +4,20 @@
 # (launch/robocup.launch, ideal vision, no rviz): README "Tests".
 if(CATKIN_ENABLE_TESTING)
   find_package(rostest REQUIRED)
-  find_package(catkin REQUIRED COMPONENTS mrt_common_ros mrt_msgs nav_msgs roscpp std_msgs xmlrpcpp)
+  # Not find_package(catkin COMPONENTS ...): that would replace the
+  # package's own catkin_INCLUDE_DIRS / catkin_LIBRARIES.
+  set(RC_TEST_INCLUDES "")
+  set(RC_TEST_LIBS "")
+  foreach(p mrt_common_ros mrt_msgs nav_msgs roscpp std_msgs xmlrpcpp)
+    find_package(${p} REQUIRED)
+    list(APPEND RC_TEST_INCLUDES ${${p}_INCLUDE_DIRS})
+    list(APPEND RC_TEST_LIBS ${${p}_LIBRARIES})
+  endforeach()
   foreach(t stop removal score)
     add_executable(${PROJECT_NAME}_${t}_rostest EXCLUDE_FROM_ALL test/rostest_${t}.cpp)
-    target_include_directories(${PROJECT_NAME}_${t}_rostest PRIVATE ${GTEST_INCLUDE_DIRS} ${catkin_INCLUDE_DIRS})
-    target_link_libraries(${PROJECT_NAME}_${t}_rostest ${GTEST_LIBRARIES} ${catkin_LIBRARIES})
-    add_dependencies(${PROJECT_NAME}_${t}_rostest ${catkin_EXPORTED_TARGETS})
+    target_include_directories(${PROJECT_NAME}_${t}_rostest PRIVATE ${GTEST_INCLUDE_DIRS} ${RC_TEST_INCLUDES})
+    target_link_libraries(${PROJECT_NAME}_${t}_rostest ${GTEST_LIBRARIES} ${RC_TEST_LIBS})
+    add_dependencies(${PROJECT_NAME}_${t}_rostest ${mrt_msgs_EXPORTED_TARGETS})
     if(TARGET player_node)
       add_dependencies(${PROJECT_NAME}_${t}_rostest player_node)
     endif()
@@ -22,3 +30,9 @@ if(CATKIN_ENABLE_TESTING)
     add_rostest(test/score.test ARGS seed:=${seed} DEPENDENCIES ${PROJECT_NAME}_score_rostest)
   endforeach()
 endif()
+
+# The bringup's launch files, rviz config and helper scripts (the launch
+# files use $(find mrt_robocup)/launch, the rostests and the demo the scripts).
+install(DIRECTORY launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/team_markers.py scripts/robocup_summary.py
+  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
