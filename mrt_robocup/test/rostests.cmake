@@ -34,5 +34,19 @@ endif()
 # The bringup's launch files, rviz config and helper scripts (the launch
 # files use $(find mrt_robocup)/launch, the rostests and the demo the scripts).
 install(DIRECTORY launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
-catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/team_markers.py scripts/robocup_summary.py
+catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# The bringup's small nodes (robot.launch, robocup.launch): MUREA's pose as
+# nav_msgs/Odometry for SCARE, and the job/role markers for rviz. (The
+# Debian system has no Python geometry_msgs / nav_msgs / visualization_msgs,
+# so topic_tools' transform and a rospy script cannot do it.)
+find_package(geometry_msgs REQUIRED)
+find_package(visualization_msgs REQUIRED)
+foreach(n pose_odometry_node team_markers_node)
+  add_executable(${n} src/ros/${n}.cpp)
+  target_include_directories(${n} PRIVATE ${geometry_msgs_INCLUDE_DIRS} ${visualization_msgs_INCLUDE_DIRS})
+  add_dependencies(${n} ${catkin_EXPORTED_TARGETS})
+  target_link_libraries(${n} ${catkin_LIBRARIES})
+  install(TARGETS ${n} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endforeach()
