@@ -13,6 +13,7 @@
 // for the messages' way through DCDT and the job topic on a loaded machine.
 // Play continues: the ball still moves (0.5 m or more) in the 20 s after.
 #include <gtest/gtest.h>
+#include <ros/network.h>
 #include <xmlrpcpp/XmlRpc.h>
 
 #include "mrt_common_ros/rostest_helpers.h"
