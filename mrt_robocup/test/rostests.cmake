@@ -4,20 +4,13 @@
 # (launch/robocup.launch, ideal vision, no rviz): README "Tests".
 if(CATKIN_ENABLE_TESTING)
   find_package(rostest REQUIRED)
-  # Not find_package(catkin COMPONENTS ...): that would replace the
-  # package's own catkin_INCLUDE_DIRS / catkin_LIBRARIES.
-  set(RC_TEST_INCLUDES "")
-  set(RC_TEST_LIBS "")
-  foreach(p mrt_common_ros mrt_msgs nav_msgs roscpp std_msgs xmlrpcpp)
-    find_package(${p} REQUIRED)
-    list(APPEND RC_TEST_INCLUDES ${${p}_INCLUDE_DIRS})
-    list(APPEND RC_TEST_LIBS ${${p}_LIBRARIES})
-  endforeach()
+  # The package's catkin components (roscpp, mrt_msgs, nav_msgs, std_msgs,
+  # mrt_common_ros) cover the tests; xmlrpcpp comes with roscpp.
   foreach(t stop removal score)
     add_executable(${PROJECT_NAME}_${t}_rostest EXCLUDE_FROM_ALL test/rostest_${t}.cpp)
-    target_include_directories(${PROJECT_NAME}_${t}_rostest PRIVATE ${GTEST_INCLUDE_DIRS} ${RC_TEST_INCLUDES})
-    target_link_libraries(${PROJECT_NAME}_${t}_rostest ${GTEST_LIBRARIES} ${RC_TEST_LIBS})
-    add_dependencies(${PROJECT_NAME}_${t}_rostest ${mrt_msgs_EXPORTED_TARGETS})
+    target_include_directories(${PROJECT_NAME}_${t}_rostest PRIVATE ${GTEST_INCLUDE_DIRS})
+    target_link_libraries(${PROJECT_NAME}_${t}_rostest ${GTEST_LIBRARIES} ${catkin_LIBRARIES})
+    add_dependencies(${PROJECT_NAME}_${t}_rostest ${catkin_EXPORTED_TARGETS})
     if(TARGET player_node)
       add_dependencies(${PROJECT_NAME}_${t}_rostest player_node)
     endif()
@@ -41,11 +34,10 @@ catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py
 # nav_msgs/Odometry for SCARE, and the job/role markers for rviz. (The
 # Debian system has no Python geometry_msgs / nav_msgs / visualization_msgs,
 # so topic_tools' transform and a rospy script cannot do it.)
-find_package(geometry_msgs REQUIRED)
 find_package(visualization_msgs REQUIRED)
 foreach(n pose_odometry_node team_markers_node)
   add_executable(${n} src/ros/${n}.cpp)
-  target_include_directories(${n} PRIVATE ${geometry_msgs_INCLUDE_DIRS} ${visualization_msgs_INCLUDE_DIRS})
+  target_include_directories(${n} PRIVATE ${visualization_msgs_INCLUDE_DIRS})
   add_dependencies(${n} ${catkin_EXPORTED_TARGETS})
   target_link_libraries(${n} ${catkin_LIBRARIES})
   install(TARGETS ${n} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
