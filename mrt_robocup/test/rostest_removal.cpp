@@ -65,7 +65,13 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
     }
     return false;
   };
-  ASSERT_TRUE(wait_for(pick, 60.0)) << "no robot holds a job of its own";
+  if (!wait_for(pick, 60.0)) {
+    std::string seen;
+    for (const auto& r : kRobots)
+      seen += " " + r + "=" + (team.job.count(r) ? "'" + team.job.at(r) + "'" : "(none)") + " heard " +
+              std::to_string(team.last_heard.count(r) ? team.last_heard.at(r) : -1.0);
+    FAIL() << "no robot holds a job of its own:" << seen;
+  }
   ROS_INFO("removing %s, which holds %s", victim.c_str(), slot.c_str());
   for (const char* node : {"scare_coordinator", "player", "dcdt_bridge"})
     EXPECT_TRUE(shutdown_node("/" + victim + "/" + node)) << "/" << victim << "/" << node;

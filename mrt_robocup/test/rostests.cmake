@@ -31,14 +31,18 @@ catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # The bringup's small nodes (robot.launch, robocup.launch): MUREA's pose as
-# nav_msgs/Odometry for SCARE, and the job/role markers for rviz. (The
+# nav_msgs/Odometry for SCARE, SCARE's world data from MAP's model, and
+# the job/role markers for rviz. (The
 # Debian system has no Python geometry_msgs / nav_msgs / visualization_msgs,
 # so topic_tools' transform and a rospy script cannot do it.)
 find_package(visualization_msgs REQUIRED)
-foreach(n pose_odometry_node team_markers_node)
+foreach(n pose_odometry_node scare_world_node team_markers_node)
   add_executable(${n} src/ros/${n}.cpp)
   target_include_directories(${n} PRIVATE ${visualization_msgs_INCLUDE_DIRS})
   add_dependencies(${n} ${catkin_EXPORTED_TARGETS})
   target_link_libraries(${n} ${catkin_LIBRARIES})
+  if(n STREQUAL scare_world_node)
+    target_link_libraries(${n} ${PROJECT_NAME}_session)
+  endif()
   install(TARGETS ${n} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
