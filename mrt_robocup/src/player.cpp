@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -33,15 +34,28 @@ PlayerOutput Player::cycle(const PlayerInput& in) {
   si.pose = in.pose;
   si.anchors = in.anchors;
   si.coordination = in.coordination;
+  if (!job_of(in.coordination).empty()) {
+    held_ = in.coordination;
+    held_since_ = in.time;
+  } else if (in.time - held_since_ <= o_.job_hold) {
+    si.coordination = held_;  // waiting for a slot: keep the last job a little
+  }
   si.possession_known = in.possession_known;
   si.possession = in.possession;
   out.situation = assessor_.assess(si);
   out.job = out.situation.job;
-  out.crisp = assessor_.crisp(out.situation, in.pose, in.coordination);
+  out.crisp = assessor_.crisp(out.situation, in.pose, si.coordination);
   out.halted = !in.pose_valid || !playing(in.referee, o_.play_without_referee);
   if (out.halted) return out;  // zero twist, no kick, ball handler off: before the rules
 
   out.commands = brian_->run(out.crisp);
+  const brian::BehaviorEngine& engine = brian_->engine();
+  for (int b = 0; b < engine.size(); ++b) {
+    if (!brian_->active()[static_cast<std::size_t>(b)]) continue;
+    char w[32];
+    std::snprintf(w, sizeof w, " %.2f ", brian_->weights()[static_cast<std::size_t>(b)]);
+    out.behaviors += engine.behavior(b).name() + w;
+  }
   std::vector<std::pair<std::string, double>> named;
   named.reserve(out.commands.size());
   for (const brian::Command& c : out.commands) {

@@ -65,7 +65,9 @@ Situation SituationAssessor::assess(const SituationInput& in) {
     } else if (std::find(o_.obstacle_classes.begin(), o_.obstacle_classes.end(), a.membership_class) !=
                o_.obstacle_classes.end()) {
       const double d = dist(me, p);
-      if (d > 0.05 && d < nearest) {  // 0.05: the robot itself, if the model holds it
+      // Closer than a body radius + 0.15 m: the robot itself (its teammates'
+      // sightings of it), nothing else fits there.
+      if (d > o_.body_radius + 0.15 && d < nearest) {
         nearest = d;
         s.obstacle = true;
         s.obstacle_at = p;
@@ -95,7 +97,9 @@ void SituationAssessor::coordination_targets(const SituationInput& in, Situation
   const Point2D own_goal{-f.goal_x, 0.0};
   // DefendGoal's point: on the line from the own goal centre to the ball.
   if (s.ball_seen) {
-    const double d = std::max(dist(own_goal, s.ball), 1e-6), k = std::min(o_.defense_distance, d) / d;
+    // Never onto the ball: at least 1 m short of it, at least 0.5 m out of the goal.
+    const double d = std::max(dist(own_goal, s.ball), 1e-6);
+    const double k = std::max(0.5, std::min(o_.defense_distance, d - 1.0)) / d;
     s.defense = {own_goal.x + k * (s.ball.x - own_goal.x), own_goal.y + k * (s.ball.y - own_goal.y)};
   } else {
     s.defense = {own_goal.x + o_.defense_distance, 0.0};
@@ -110,9 +114,15 @@ void SituationAssessor::coordination_targets(const SituationInput& in, Situation
     s.target = s.defense;
   } else if (s.job == "PassageToMate.receiver") {
     const double bx = s.ball_seen ? s.ball.x : 0.0, by = s.ball_seen ? s.ball.y : 0.0;
-    s.target = {std::clamp(bx + 3.0, -f.goal_x + 3.0, f.goal_x - f.penalty_depth - 0.5), by > 0.0 ? -2.0 : 2.0};
+    // 3 m ahead of the ball, on the receiver's own side of the field.
+    (void)by;
+    s.target = {std::clamp(bx + 3.0, -f.goal_x + 3.0, f.goal_x - f.penalty_depth - 0.5), in.pose.y >= 0.0 ? 2.5 : -2.5};
   } else if (s.job == "DefensiveDoubling.cover") {
     s.target = {-f.goal_x + 2.5, 0.0};
+  } else if (s.job == "Blocking.blocker" && s.ball_seen) {
+    // Between the ball and the own goal, 1.5 m from the ball.
+    const double d = std::max(dist(own_goal, s.ball), 1e-6), k = std::min(1.5, d) / d;
+    s.target = {s.ball.x + k * (own_goal.x - s.ball.x), s.ball.y + k * (own_goal.y - s.ball.y)};
   } else if (s.job == "Blocking.cover") {
     s.target = {-2.0, 0.0};
   } else if (s.ball_seen && s.job != "Positioning" && !s.job.empty()) {
@@ -122,7 +132,7 @@ void SituationAssessor::coordination_targets(const SituationInput& in, Situation
   }
 }
 
-void SituationAssessor::shot(const SituationInput& in, Situation& s) const {
+void SituationAssessor::shot(const SituationInput& in, Situation& s) {
   const FieldGeometry& f = o_.field;
   const Point2D me{in.pose.x, in.pose.y};
   // Aim beside the goal centre, away from the obstacle nearest the goal (the keeper).
@@ -135,15 +145,21 @@ void SituationAssessor::shot(const SituationInput& in, Situation& s) const {
         o_.obstacle_classes.end())
       continue;
     const Point2D p{a.x, a.y};
-    if (dist(p, me) < 0.05) continue;
+    if (dist(p, me) <= o_.body_radius + 0.15) continue;  // itself
     blockers.push_back(p);
     if (dist(p, centre) < best) {
       best = dist(p, centre);
       keeper_y = p.y;
     }
   }
-  const double side = best < 2.0 ? (keeper_y > 0.0 ? -1.0 : 1.0) : (me.y >= 0.0 ? 1.0 : -1.0);
-  s.aim = {f.goal_x, side * std::min(o_.aim_offset, f.goal_half_width - o_.ball_radius)};
+  // The side changes only when the keeper is clearly on it (10 cm hysteresis).
+  if (best < 2.0) {
+    if (keeper_y > 0.1) aim_side_ = -1.0;
+    else if (keeper_y < -0.1) aim_side_ = 1.0;
+  } else {
+    aim_side_ = me.y >= 0.0 ? 1.0 : -1.0;
+  }
+  s.aim = {f.goal_x, aim_side_ * std::min(o_.aim_offset, f.goal_half_width - o_.ball_radius)};
   s.shot_clear = dist(me, s.aim) <= o_.shot_range;
   for (const Point2D& b : blockers)
     if (segment_distance(me, s.aim, b) < o_.shot_clearance) s.shot_clear = false;

@@ -62,7 +62,7 @@ scare::CrispMap team_crisp(const std::vector<AnchorView>& anchors, bool team_own
       best = std::hypot(a.x - f.goal_x, a.y);
       keeper_y = a.y;
     }
-  const double ay = best < 2.0 ? (keeper_y > 0.0 ? -0.6 : 0.6) : (by >= 0.0 ? 0.6 : -0.6);
+  const double ay = best < 2.0 ? (keeper_y > 0.0 ? -0.75 : 0.75) : (by >= 0.0 ? 0.75 : -0.75);
   const double dx = f.goal_x - bx, dy = ay - by, l2 = dx * dx + dy * dy;
   bool clear = true;
   double threat = 0.0;
@@ -72,6 +72,9 @@ scare::CrispMap team_crisp(const std::vector<AnchorView>& anchors, bool team_own
     if (std::hypot(bx + t * dx - a.x, by + t * dy - a.y) < clearance) clear = false;
     if (bx < -f.goal_x / 3.0 && std::hypot(a.x - bx, a.y - by) < 1.5) threat = 1.0;
   }
+  // Far from the goal the carrier dribbles on (BringBall): a pass is for a
+  // blocked shot within 6 m.
+  if (std::hypot(dx, dy) > 6.0) clear = true;
   c["ShotClear"] = {clear ? 1.0 : 0.0, 1.0};
   c["Threat"] = {threat, 1.0};
   c["ReceiveX"] = {std::clamp(bx + 3.0, -f.goal_x + 3.0, f.goal_x - f.penalty_depth - 0.5), rel};

@@ -24,6 +24,7 @@ struct Member {
   std::string job;
   bool had_job = false, active = true;
   Parameters coordination;
+  PlayerOutput last;
 };
 
 struct TeamSession::Impl {
@@ -173,7 +174,8 @@ void TeamSession::Impl::act(double t) {
     in.referee = referee;
     in.possession_known = true;
     in.possession = match->in_reach(m.index);
-    const PlayerOutput out = m.player->cycle(in);
+    m.last = m.player->cycle(in);
+    const PlayerOutput& out = m.last;
     if (out.job != m.job) {
       if (m.had_job) ++stats.role_changes;
       m.had_job = m.had_job || !out.job.empty();
@@ -275,6 +277,14 @@ const std::string& TeamSession::robot_name(std::size_t i) const { return impl_->
 const std::string& TeamSession::job(std::size_t i) const { return impl_->team.at(i).job; }
 bool TeamSession::active(std::size_t i) const { return impl_->team.at(i).active; }
 common::Twist2D TeamSession::command(std::size_t i) const { return impl_->team.at(i).command; }
+Pose2D TeamSession::pose(std::size_t i) const { return impl_->sim->robots()[impl_->team.at(i).index].pose; }
+Point2D TeamSession::ball() const { return impl_->sim->world().ball.position; }
+const PlayerOutput& TeamSession::output(std::size_t i) const { return impl_->team.at(i).last; }
+int TeamSession::holder() const {
+  for (std::size_t i = 0; i < impl_->team.size(); ++i)
+    if (impl_->match->holder() == static_cast<int>(impl_->team[i].index)) return static_cast<int>(i);
+  return -1;
+}
 double TeamSession::true_speed(std::size_t i) const {
   const auto& r = impl_->sim->robots()[impl_->team.at(i).index];
   return std::hypot(r.twist.vx, r.twist.vy) + std::abs(r.twist.omega) * r.config.base.body_radius;

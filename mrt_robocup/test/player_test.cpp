@@ -139,14 +139,15 @@ TEST(Player, RefereeStopHaltsWhateverTheRules) {
   EXPECT_TRUE(p.cycle(in).halted);
 }
 
-// Ball held (kicker sensor) at (5, 0.6) facing +x, nobody around: the aim is
-// (9, 0.6) (robot on the +y side), 4 m away: SHOOTING 1, NARROW 1, ShotClear
-// -> KickToGoal: Kick HARD = strength 1.
+// Ball held (kicker sensor) at (6, 0.85) facing +x, nobody around: the aim
+// is (9, 0.85) (aim_offset 0.85 m, robot on the +y side), 3 m away:
+// SHOOTING 1 (below 3000 mm), NARROW 1, ShotClear -> KickToGoal: Kick HARD
+// = strength 1.
 TEST(Player, KicksWhenTheShotIsClear) {
   for (const char* k : {"differential", "omni"}) {
     Player p(options(k));
-    PlayerInput in = ball_ahead(5.36, 0.6);
-    in.pose = Pose2D(5.0, 0.6, 0.0);
+    PlayerInput in = ball_ahead(6.36, 0.85);
+    in.pose = Pose2D(6.0, 0.85, 0.0);
     in.possession_known = true;
     in.possession = true;
     const PlayerOutput out = p.cycle(in);
@@ -161,11 +162,11 @@ TEST(Player, KicksWhenTheShotIsClear) {
 // An opponent on the shot line: no kick.
 TEST(Player, NoKickWhenBlocked) {
   Player p(options("differential"));
-  PlayerInput in = ball_ahead(5.36, 0.6);
-  in.pose = Pose2D(5.0, 0.6, 0.0);
+  PlayerInput in = ball_ahead(6.36, 0.85);
+  in.pose = Pose2D(6.0, 0.85, 0.0);
   in.possession_known = true;
   in.possession = true;
-  in.anchors.push_back({"Opponent", 7.0, 0.6, 0, 0, 1.0});
+  in.anchors.push_back({"Opponent", 7.5, 0.85, 0, 0, 1.0});
   EXPECT_FALSE(p.cycle(in).kick);
 }
 
@@ -181,6 +182,29 @@ TEST(Player, BadKinematicsIsRefused) {
   PlayerOptions o = options("differential");
   o.kinematics = "legged";
   EXPECT_THROW(Player{o}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mrt::robocup
+
+namespace mrt::robocup {
+namespace {
+
+// The ball held at kick-off, 9.2 m from the goal, job RecoverWanderingBall:
+// out of range (SHOOTING 0 beyond 4000 mm) and ClearBall not wanted (a
+// ball job): no kick, CarryBallToGoal carries it (Speed MEDIUM 80 cm/s
+// with the goal ahead).
+TEST(Player, NoKickFromFarAway) {
+  Player p(options("differential"));
+  PlayerInput in = ball_ahead(0.16, 0.0);
+  in.pose = Pose2D(-0.2, 0.0, 0.0);
+  in.coordination.clear();
+  in.coordination["ScareJob_RecoverWanderingBall"] = {1.0, 1.0};
+  in.possession_known = true;
+  in.possession = true;
+  const PlayerOutput out = p.cycle(in);
+  EXPECT_FALSE(out.kick) << out.behaviors;
+  EXPECT_NEAR(out.twist.vx, 0.8, 1e-6) << out.behaviors;
 }
 
 }  // namespace

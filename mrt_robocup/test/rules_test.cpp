@@ -31,12 +31,12 @@ TEST(RuleBases, OmniIsCheckerClean) {
 }
 
 // Both rule bases have the same behaviours (the shared CANDO and WANT files
-// name them): 8 at level 1, AvoidObstacle at 2, AvoidCollision and LeaveArea at 3.
+// name them): 9 at level 1, AvoidObstacle at 2, AvoidCollision and LeaveArea at 3.
 TEST(RuleBases, SameHierarchy) {
   const auto diff = mrt::brian::Brian::from_path(kConfig + "/brian/differential/BrianConfigs.ini");
   const auto omni = mrt::brian::Brian::from_path(kConfig + "/brian/omni/BrianConfigs.ini");
-  EXPECT_EQ(diff->cando().size(), 11u);
-  EXPECT_EQ(omni->cando().size(), 11u);
+  EXPECT_EQ(diff->cando().size(), 12u);
+  EXPECT_EQ(omni->cando().size(), 12u);
 }
 
 TEST(RuleBases, BrokenCopyIsReported) {

@@ -22,12 +22,62 @@ int main(int argc, char** argv) {
   app.add_option("--duration", o.duration, "simulated seconds")->check(CLI::PositiveNumber);
   app.add_option("--rate", o.rate, "Hz of MAP, SCARE and the players")->check(CLI::PositiveNumber);
   app.add_option("--dt", o.dt, "simulator step, s")->check(CLI::PositiveNumber);
+  double trace = 0.0;
+  int trace_robot = -1;
+  app.add_option("--trace-robot", trace_robot, "with --trace: also robot i's behaviours and crisp data");
+  app.add_option("--trace", trace, "print the ball, every robot's pose and job every this many s (0: never)");
+  bool keeper_and_static = false;
+  app.add_flag("--keeper-and-static", keeper_and_static,
+               "replace the match's opponents by a goalkeeper at (8.4, 0) and a static defender at (5, 0) (the test)");
+  double stop_at = -1.0;
+  app.add_option("--stop-at", stop_at, "the operator's referee stop at this time (s)");
+  std::string remove;
+  double remove_at = -1.0;
+  app.add_option("--remove", remove, "take this robot out ...");
+  app.add_option("--remove-at", remove_at, "... at this time (s)");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
     resolve_world_or_match(o);
+    if (keeper_and_static) {
+      o.replace_opponents = true;
+      mrt::sim::OpponentConfig keeper, back;
+      keeper.name = "opp_keeper";
+      keeper.role = "goalkeeper";
+      keeper.home = {8.4, 0.0};
+      keeper.speed = 1.5;
+      back.name = "opp_back";
+      back.role = "static";
+      back.home = {5.0, 0.0};
+      o.opponents = {keeper, back};
+    }
     TeamSession s(o);
     const auto t0 = std::chrono::steady_clock::now();
-    s.run();
+    double next = 0.0;
+    while (s.cycle()) {
+      if (stop_at >= 0.0 && s.time() >= stop_at) {
+        s.referee(Referee::kStop);
+        stop_at = -1.0;
+      }
+      if (remove_at >= 0.0 && s.time() >= remove_at) {
+        s.remove_robot(remove);
+        remove_at = -1.0;
+      }
+      if (trace <= 0.0 || s.time() < next) continue;
+      next += trace;
+      std::printf("t %6.1f ball %5.2f %5.2f holder %d score %d-%d |", s.time(), s.ball().x, s.ball().y, s.holder(),
+                  s.stats().score[0], s.stats().score[1]);
+      for (std::size_t i = 0; i < s.robots(); ++i)
+        std::printf(" %s %5.2f %5.2f %4.0f %s v%.2f w%.2f |", s.robot_name(i).c_str(), s.pose(i).x, s.pose(i).y,
+                    s.pose(i).theta * 57.29578, s.job(i).c_str(), s.command(i).vx, s.command(i).omega);
+      std::printf("\n");
+      if (trace_robot >= 0 && static_cast<std::size_t>(trace_robot) < s.robots()) {
+        const PlayerOutput& out = s.output(static_cast<std::size_t>(trace_robot));
+        std::printf("   behaviours: %s\n   crisp:", out.behaviors.c_str());
+        for (const auto& c : out.crisp)
+          if (c.value != 0.0) std::printf(" %s=%.0f", c.name.c_str(), c.value);
+        std::printf("\n");
+      }
+    }
     const double cpu = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const TeamStats& st = s.stats();
     std::printf("score: %d - %d\n", st.score[0], st.score[1]);

@@ -33,6 +33,9 @@ struct PlayerOptions {
   std::string kick_name = "Kick"; // Brian's kick output (strength in [0, 1])
   double kick_cooldown = 0.5;     // s between two kicks
   bool play_without_referee = false;  // true: play before any referee command
+  /// s the last job is kept while SCARE gives none (a robot waiting for a
+  /// teammate to release its new slot keeps doing what it did).
+  double job_hold = 1.0;
 };
 
 struct PlayerInput {
@@ -55,6 +58,8 @@ struct PlayerOutput {
   std::string job;                // the coordination job/role
   brian::CrispDataList crisp;     // what Brian was given
   brian::CommandList commands;    // what Brian proposed
+  /// The active behaviours with their weight, "GoToBall 1.00 AvoidObstacle 0.40" (debug).
+  std::string behaviors;
   Situation situation;
 };
 
@@ -76,6 +81,8 @@ class Player {
   airboard::BrianMapping mapping_;
   SituationAssessor assessor_;
   double last_kick_ = -1e9;
+  Parameters held_;          // the last coordination with a job
+  double held_since_ = -1e9;
 };
 
 /// "differential"/"omni" -> the mapping of that kinematics' rule base;

@@ -49,9 +49,9 @@ struct SituationOptions {
   double min_reliability = 0.05;     // anchors below are ignored
   double possession_gap = 0.08;      // m beyond the body: the ball counts as owned (no kicker sensor)
   double possession_angle = 25.0;    // deg, idem
-  double aim_offset = 0.6;           // m from the goal centre towards the post farther from the keeper
+  double aim_offset = 0.85;          // m from the goal centre towards the post farther from the keeper
   double shot_clearance = 0.45;      // m: an obstacle this close to the shot line blocks it
-  double shot_range = 5.0;           // m: farther, ShotClear is 0
+  double shot_range = 6.0;           // m: farther, ShotClear is 0
   double defense_distance = 1.5;     // m from the own goal centre towards the ball (DefendGoal)
   Point2D home{-3.0, 0.0};           // KeepPosition / Positioning spot
 };
@@ -98,10 +98,11 @@ class SituationAssessor {
 
  private:
   void coordination_targets(const SituationInput& in, Situation& s) const;
-  void shot(const SituationInput& in, Situation& s) const;
+  void shot(const SituationInput& in, Situation& s);
 
   SituationOptions o_;
   double area_since_ = -1.0;  // s, -1: not in the area
+  double aim_side_ = 1.0;     // +1: aim at the +y side of the goal
 };
 
 /// The job of SCARE's crisp output: "Activity" for a job, "Activity.role"

@@ -27,8 +27,9 @@ std::vector<AnchorView> anchor_views(const map::WorldModel& wm, double now);
 
 /// SCARE's world data (m, [0, 1]) for the activity file
 /// (config/scare/robocup_team.yaml): BallX, BallY, BallSeen, BallOwned
-/// (`team_owns`: a teammate's kicker holds it), ShotClear (no opponent
-/// within `clearance` of the line from the ball to the goal's open side),
+/// (`team_owns`: a teammate's kicker holds it), ShotClear (the ball more
+/// than 6 m from the goal, or no opponent within `clearance` of the line
+/// from the ball to the goal's open side),
 /// Threat (the ball in the own third with an opponent within 1.5 m of it),
 /// ReceiveX/ReceiveY (the receiver's spot, as situation.cpp's target).
 scare::CrispMap team_crisp(const std::vector<AnchorView>& anchors, bool team_owns, const FieldGeometry& f,

@@ -86,6 +86,12 @@ class TeamSession {
   /// The twist last commanded to robot i and its true speed (m/s).
   common::Twist2D command(std::size_t i) const;
   double true_speed(std::size_t i) const;
+  /// Ground truth: robot i's pose, the ball, the robot holding it (-1 none).
+  Pose2D pose(std::size_t i) const;
+  Point2D ball() const;
+  int holder() const;
+  /// Robot i's last player output (debug).
+  const PlayerOutput& output(std::size_t i) const;
 
  private:
   struct Impl;

@@ -55,6 +55,7 @@ struct NodeOptions {
         .get_positive("carry_max_omega", pl.carry_max_omega)
         .get_non_negative("dribble_distance", pl.dribble_distance)
         .get_non_negative("kick_cooldown", pl.kick_cooldown)
+        .get_non_negative("job_hold", pl.job_hold)
         .get("play_without_referee", pl.play_without_referee)
         .get_positive("body_radius", s.body_radius)
         .get_positive("goal_x", s.field.goal_x)
