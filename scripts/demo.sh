@@ -8,7 +8,8 @@
 #                                       "demo" is the figure eight on the MSL field)
 #   DURATION=<s>  simulated seconds to record at most (default: 200 for roby,
 #                 which stops as soon as the route is completed; 400 for
-#                 followme, which stops when the tour is over; 30 otherwise)
+#                 followme, which stops when the tour is over; 120 for robocup;
+#                 30 otherwise)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 GUI=0
@@ -25,6 +26,7 @@ LAUNCH="$ROOT/launch/$NAME.launch"
 case "$NAME" in
   roby) DURATION="${DURATION:-200}" ;;
   followme) DURATION="${DURATION:-400}" ;;
+  robocup) DURATION="${DURATION:-120}" ;;
   *) DURATION="${DURATION:-30}" ;;
 esac
 
@@ -75,7 +77,10 @@ echo "demo: simulator up after ${SECONDS} s; recording at most ${DURATION} s of 
 start=$(date +%s.%N)
 # Left out: /clock (`rosbag play --clock` publishes its own) and the growing
 # ground-truth trails (nav_msgs/Path, derivable from ground_truth).
-rosbag record --quiet -a -x '/clock|/rosout(_agg)?|.*/ground_truth_path' --duration="$DURATION" -O "$OUT/demo.bag" \
+# RoboCup: not the four robots' camera images either (10 Hz x 900 kB each).
+exclude='/clock|/rosout(_agg)?|.*/ground_truth_path'
+[ "$NAME" = robocup ] && exclude="$exclude|.*/camera/.*"
+rosbag record --quiet -a -x "$exclude" --duration="$DURATION" -O "$OUT/demo.bag" \
   >"$OUT/rosbag.log" 2>&1 &
 bag=$!
 waiters=("$bag")
@@ -118,6 +123,13 @@ if [ "$NAME" = followme ]; then
   # distributed:=false)
   /usr/bin/python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]).read().split("---")[0])["data"])' \
     "$OUT/tour_summary.txt" | sed 's/^/  /' || echo "  (no summary: see $OUT/roslaunch.log)"
+fi
+if [ "$NAME" = robocup ]; then
+  # score, ball control, passes, role changes per minute, localization and
+  # ball errors from ground truth; the real-time factor the team held
+  /usr/bin/python3 "$ROOT/mrt_robocup/scripts/robocup_summary.py" "$OUT/demo.bag" ||
+    echo "robocup: no summary (see $OUT/roslaunch.log)"
+  grep -h "real-time factor:" "$OUT/roslaunch.log" | tail -n 1 | sed 's/^.*real-time factor/robocup: real-time factor/' || true
 fi
 
 # The plots of the run, over the launch file's world (its `world` argument).

@@ -17,6 +17,7 @@ const char* kind_name(PayloadKind k) {
     case PayloadKind::COMMANDS: return "commands";
     case PayloadKind::WORLD_MODEL: return "world_model";
     case PayloadKind::COORDINATION: return "coordination";
+    case PayloadKind::REFEREE: return "referee";
     case PayloadKind::RAW: return "raw";
   }
   return "?";
@@ -61,9 +62,10 @@ std::vector<TopicMapping> parse_list(const YamlReader& r, const YAML::Node& list
     else if (kind == "commands") m.kind = PayloadKind::COMMANDS;
     else if (kind == "world_model") m.kind = PayloadKind::WORLD_MODEL;
     else if (kind == "coordination") m.kind = PayloadKind::COORDINATION;
+    else if (kind == "referee") m.kind = PayloadKind::REFEREE;
     else if (kind == "raw") m.kind = PayloadKind::RAW;
     else
-      r.fail(e["kind"], "kind must be percept, crisp_data, commands, world_model, coordination or raw, got '" + kind + "'");
+      r.fail(e["kind"], "kind must be percept, crisp_data, commands, world_model, coordination, referee or raw, got '" + kind + "'");
     if (to_ros) {
       const std::string s = scalar(r, e, "scope", false, "all");
       if (s == "local") m.scope = DCDT_LOCAL_MSG;

@@ -82,6 +82,9 @@ class BridgeNode {
         case PayloadKind::COORDINATION:
           pubs_[m.type] = nh.advertise<mrt_msgs::CoordinationParameters>(m.topic, o.queue_size);
           break;
+        case PayloadKind::REFEREE:  // latched: a robot that joins late learns whether play is on
+          pubs_[m.type] = nh.advertise<mrt_msgs::RefereeCommand>(m.topic, o.queue_size, true);
+          break;
         case PayloadKind::RAW: pubs_[m.type] = nh.advertise<std_msgs::String>(m.topic, o.queue_size); break;
       }
     }
@@ -140,6 +143,7 @@ class BridgeNode {
         case PayloadKind::COMMANDS: pub.publish(ros_conv::to_commands(*xml)); break;
         case PayloadKind::WORLD_MODEL: pub.publish(ros_conv::to_world_model(*xml)); break;
         case PayloadKind::COORDINATION: pub.publish(ros_conv::to_coordination(*xml)); break;
+        case PayloadKind::REFEREE: pub.publish(ros_conv::to_referee(*xml)); break;
         case PayloadKind::RAW: {
           std_msgs::String s;
           s.data = msg.payload_string();
@@ -191,6 +195,9 @@ class BridgeNode {
         break;
       case PayloadKind::COORDINATION:
         subscribe_kind<mrt_msgs::CoordinationParameters>(nh, m, q, ros_conv::from_coordination);
+        break;
+      case PayloadKind::REFEREE:
+        subscribe_kind<mrt_msgs::RefereeCommand>(nh, m, q, ros_conv::from_referee);
         break;
       case PayloadKind::RAW: {
         const boost::function<void(const ros::MessageEvent<std_msgs::String const>&)> cb =

@@ -95,3 +95,27 @@ TEST(BridgeMapping, ShippedTeamConfigurationParses) {
 }
 
 }  // namespace
+
+namespace {
+
+// The RoboCup configuration (README "Team data"): a robot's bridge carries the
+// team data of team_mapping.yaml plus the referee box's commands from DCDT
+// (type 28, MSG_FROM_REFBOX, in mrt_dcdt's types.h) on its own `referee`
+// topic; the referee-box station shares /referee as type 28, guaranteed.
+TEST(BridgeMapping, ShippedRoboCupConfigurationParses) {
+  auto m = load_bridge_mapping(std::string(DCDT_CONFIG_DIR) + "/robocup_mapping.yaml");
+  ASSERT_EQ(m.to_ros.size(), 3u);
+  ASSERT_EQ(m.to_dcdt.size(), 2u);
+  EXPECT_EQ(m.to_ros[2].type, 28);
+  EXPECT_EQ(m.to_ros[2].kind, PayloadKind::REFEREE);
+  EXPECT_EQ(m.to_ros[2].topic, "referee");
+  EXPECT_STREQ(kind_name(PayloadKind::REFEREE), "referee");
+  auto r = load_bridge_mapping(std::string(DCDT_CONFIG_DIR) + "/refbox_mapping.yaml");
+  EXPECT_TRUE(r.to_ros.empty());
+  ASSERT_EQ(r.to_dcdt.size(), 1u);
+  EXPECT_EQ(r.to_dcdt[0].type, 28);
+  EXPECT_EQ(r.to_dcdt[0].kind, PayloadKind::REFEREE);
+  EXPECT_EQ(r.to_dcdt[0].warranty, DCDT_DW_GUARANTEED);
+}
+
+}  // namespace

@@ -196,6 +196,7 @@ int main(int argc, char** argv) {
     std::unique_ptr<mrt::sim::MatchConfig> match;
     try {
       world = mrt::sim::load_world(opt.world_file);
+      apply_team_options(opt, world);  // ~robots, ~camera_rate, ~seed
       if (!opt.match_file.empty()) {
         match = std::make_unique<mrt::sim::MatchConfig>(mrt::sim::load_match_config(opt.match_file));
         mrt::sim::setup_match_world(*match, world);
@@ -203,6 +204,9 @@ int main(int argc, char** argv) {
     } catch (const mrt::common::ParseError& e) {
       ROS_FATAL("cannot load world: %s", e.what());
       return 2;
+    } catch (const std::invalid_argument& e) {
+      ROS_FATAL("%s", e.what());
+      return 1;
     } catch (const std::exception& e) {
       ROS_FATAL("cannot load world %s: %s", opt.world_file.c_str(), e.what());
       return 2;

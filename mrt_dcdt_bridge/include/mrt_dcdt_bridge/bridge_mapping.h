@@ -4,7 +4,7 @@
 //   to_ros:                        # DCDT -> ROS
 //     - type: MSG_FROM_VISION      # legacy name or number
 //       topic: vision/percepts
-//       kind: percept              # percept | crisp_data | commands | world_model | coordination | raw
+//       kind: percept              # percept | crisp_data | commands | world_model | coordination | referee | raw
 //       scope: all                 # local | remote | all (default all)
 //   to_dcdt:                       # ROS -> DCDT
 //     - topic: motion/commands
@@ -21,8 +21,9 @@
 namespace mrt::dcdt {
 
 /// WORLD_MODEL: mrt_msgs/WorldModel (MAP's team exchange); COORDINATION:
-/// mrt_msgs/CoordinationParameters (SCARE's team topic). README "Team data".
-enum class PayloadKind { PERCEPT, CRISP_DATA, COMMANDS, WORLD_MODEL, COORDINATION, RAW };
+/// mrt_msgs/CoordinationParameters (SCARE's team topic); REFEREE:
+/// mrt_msgs/RefereeCommand (the referee box). README "Team data".
+enum class PayloadKind { PERCEPT, CRISP_DATA, COMMANDS, WORLD_MODEL, COORDINATION, REFEREE, RAW };
 const char* kind_name(PayloadKind k);
 
 struct TopicMapping {

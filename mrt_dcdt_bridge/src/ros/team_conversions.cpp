@@ -268,4 +268,56 @@ mrt_msgs::CoordinationParameters to_coordination(const XmlMessage& x) {
   return c;
 }
 
+XmlMessage from_referee(const mrt_msgs::RefereeCommand& r) {
+  if (r.name.empty()) throw XmlError(0, "referee command " + std::to_string(r.command) + ": an empty name cannot be carried");
+  if (r.teams.size() != r.score.size())
+    throw XmlError(0, "referee command " + r.name + ": teams and score of different lengths");
+  XmlMessage x;
+  stamp_to(r.header, &x);
+  x.sensor = "refbox";
+  x.robot = "referee";
+  XmlObject self{r.name, "RefereeCommand", {num("command", r.command)}};
+  if (!r.team.empty()) self.attributes.push_back(sym("team", r.team));
+  self.attributes.push_back(num("x", r.x));
+  self.attributes.push_back(num("y", r.y));
+  if (!r.reason.empty()) self.attributes.push_back(sym("reason", r.reason));
+  x.objects.push_back(std::move(self));
+  for (std::size_t i = 0; i < r.teams.size(); ++i) {
+    if (r.teams[i].empty()) throw XmlError(0, "referee command " + r.name + ": an empty team name cannot be carried");
+    x.objects.push_back({r.teams[i], "Score", {num("goals", r.score[i])}});
+  }
+  return x;
+}
+
+mrt_msgs::RefereeCommand to_referee(const XmlMessage& x) {
+  mrt_msgs::RefereeCommand r;
+  stamp_from(x, &r.header);
+  bool have_command = false;
+  for (const auto& o : x.objects) {
+    Attributes at(o);
+    if (o.membership_class == "RefereeCommand") {
+      if (have_command) throw XmlError(0, "more than one RefereeCommand object");
+      have_command = true;
+      const uint32_t c = at.uint("command");
+      if (c > 255) at.fail("attribute 'command' must be in [0, 255]");
+      if (o.name.empty()) at.fail("must be named after the command");
+      r.command = static_cast<uint8_t>(c);
+      r.name = o.name;
+      r.team = at.symbol("team");
+      r.x = at.number("x");
+      r.y = at.number("y");
+      r.reason = at.symbol("reason");
+    } else if (o.membership_class == "Score") {
+      r.teams.push_back(o.name);
+      r.score.push_back(at.uint("goals"));
+    } else {
+      throw XmlError(0, "object '" + o.name + "' of class '" + o.membership_class +
+                            "' in a referee message (expected RefereeCommand or Score)");
+    }
+    at.finish();
+  }
+  if (!have_command) throw XmlError(0, "a referee message needs one RefereeCommand object");
+  return r;
+}
+
 }  // namespace mrt::dcdt::ros_conv

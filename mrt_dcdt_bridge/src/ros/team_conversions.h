@@ -4,6 +4,7 @@
 #pragma once
 
 #include <mrt_msgs/CoordinationParameters.h>
+#include <mrt_msgs/RefereeCommand.h>
 #include <mrt_msgs/WorldModel.h>
 
 #include "mrt_dcdt/xml_message.h"
@@ -22,5 +23,14 @@ mrt_msgs::WorldModel to_world_model(const XmlMessage& x);
 /// in order), "Activity" (per activity) and "Heard" (the gossip) objects.
 XmlMessage from_coordination(const mrt_msgs::CoordinationParameters& c);
 mrt_msgs::CoordinationParameters to_coordination(const XmlMessage& x);
+
+/// The referee box (MSG_FROM_REFBOX, 28): one object of class
+/// "RefereeCommand" named after the command (`name`) with `command`, `x`,
+/// `y` and the optional symbols `team` and `reason`, then one "Score" object
+/// per team (named after it, attribute `goals`), in `teams` order. Throws
+/// XmlError for an empty name, a team name XML cannot carry or
+/// `teams`/`score` of different lengths.
+XmlMessage from_referee(const mrt_msgs::RefereeCommand& r);
+mrt_msgs::RefereeCommand to_referee(const XmlMessage& x);
 
 }  // namespace mrt::dcdt::ros_conv

@@ -54,7 +54,11 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get("frame_prefix", o.frame_prefix)
       .get("sensor_parent", o.sensor_parent)
       .get("joint_state_robots", o.joint_state_robots)
-      .get("description_robots", o.description_robots);
+      .get("description_robots", o.description_robots)
+      .get("robots", o.robots)
+      .get_non_negative("camera_rate", o.camera_rate)
+      .get("seed", o.seed);
+  ParamReader::check(o.seed >= -1, "seed", "an integer >= 0, or -1 for the world file's");
   ParamReader::check(!o.world_frame.empty() && valid_frame_name(o.world_frame), "world_frame",
                      "a non-empty frame name of [A-Za-z0-9_/]");
   ParamReader::check(valid_frame_name(o.frame_prefix), "frame_prefix", "characters of [A-Za-z0-9_/]");
@@ -62,6 +66,24 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
   ParamReader::check(o.sensor_parent == "base_link_truth" || o.sensor_parent == "base_link", "sensor_parent",
                      "'base_link_truth' or 'base_link'");
   return o;
+}
+
+void apply_team_options(const NodeOptions& o, World& world) {
+  if (!o.robots.empty()) {
+    for (const std::string& name : o.robots) {
+      const bool known = std::any_of(world.robots.begin(), world.robots.end(),
+                                     [&](const RobotConfig& r) { return r.name == name; });
+      if (!known) throw std::invalid_argument("~robots: the world has no robot '" + name + "'");
+    }
+    std::vector<RobotConfig> kept;
+    for (RobotConfig& r : world.robots)
+      if (std::find(o.robots.begin(), o.robots.end(), r.name) != o.robots.end()) kept.push_back(std::move(r));
+    world.robots = std::move(kept);
+  }
+  if (o.camera_rate > 0.0)
+    for (RobotConfig& r : world.robots)
+      if (r.sensors.camera.rate > 0.0) r.sensors.camera.rate = o.camera_rate;
+  if (o.seed >= 0) world.seed = static_cast<std::uint64_t>(o.seed);
 }
 
 }  // namespace mrt::sim::node

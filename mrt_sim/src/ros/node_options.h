@@ -8,6 +8,8 @@
 
 #include <ros/node_handle.h>
 
+#include "mrt_sim/world.h"
+
 namespace mrt::sim::node {
 
 struct NodeOptions {
@@ -27,6 +29,9 @@ struct NodeOptions {
   std::string sensor_parent = "base_link_truth";  // ~sensor_parent: parent of sensor frames
   std::vector<std::string> joint_state_robots;   // ~joint_state_robots: publish <robot>/joint_states
   std::vector<std::string> description_robots;   // ~description_robots: sensor frames from robot_description
+  std::vector<std::string> robots;     // ~robots: the world's robots to simulate (empty = all); a team's size
+  double camera_rate = 0.0;            // ~camera_rate: Hz of every robot's camera (0 = the world file's)
+  int seed = -1;                       // ~seed: the world's noise seed (-1 = the world file's)
 
   double dt() const { return 1.0 / rate_hz; }
   /// Steps between two publications at `rate` Hz (at least 1).
@@ -39,5 +44,11 @@ struct NodeOptions {
 /// mrt_common_ros's ParamReader; throws its ParamError naming the first bad
 /// one ("~rate_hz: expected a finite number > 0").
 NodeOptions load_node_options(const ros::NodeHandle& pnh);
+
+/// Applies ~robots, ~camera_rate and ~seed to a loaded world: keeps only the robots
+/// named (in the world's order; throws std::invalid_argument naming the
+/// parameter for a name the world does not have) and sets the rate of every
+/// camera the world gives; a ~seed >= 0 replaces the world's seed.
+void apply_team_options(const NodeOptions& o, World& world);
 
 }  // namespace mrt::sim::node
