@@ -39,11 +39,13 @@ phase_done setup
 # background at the lowest priority (nice 19), so it uses only the CPU time
 # the main build and the tests leave idle (the tests run one at a time: the
 # second core is mostly idle during them) and does not disturb the tests'
-# timing. Its results go to build/test_results beside the others. Its own
-# process group, ended with this script.
+# timing (SAN_NICE=0 gives it a fair share instead, e.g. on a machine
+# loaded by other work, where nice 19 would starve it). Its results go to
+# build/test_results beside the others. Its own process group, ended with
+# this script.
 san_pid=
 if [ "$SANITIZE" != 0 ]; then
-  setsid nice -n 19 "$ROOT/scripts/sanitize.sh" all >"$ROOT/build_san.log" 2>&1 &
+  setsid nice -n "${SAN_NICE:-19}" "$ROOT/scripts/sanitize.sh" all >"$ROOT/build_san.log" 2>&1 &
   san_pid=$!
   trap 'kill -- -$san_pid 2>/dev/null || true; rm -f "$T_FILE"' EXIT
 else
