@@ -21,7 +21,8 @@
 # The normal build (build/, devel/) is not touched: demo.sh and
 # check_install.sh keep using uninstrumented programs. Each sanitizer build
 # directory is configured once; make re-runs cmake when a CMakeLists changes.
-# Each step prints its wall and CPU time.
+# Each step prints its wall and CPU time. SAN_GTESTS (a ctest regex, default
+# _gtest_) narrows the ASan gtests run by hand.
 #   scripts/sanitize.sh [all|build|run|fuzz]  all (default): ASan build,
 #       its gtests, the fuzzers, TSan build, its gtests; build / run: the
 #       builds / the rest; fuzz: only the fuzzers. test.sh starts `all` at
@@ -196,7 +197,7 @@ copy_build_results() {
 
 run_asan() {
   echo "== sanitizers: gtests under ASan+UBSan"
-  san_gtests "$ROOT/build_san" _gtest_ asan
+  san_gtests "$ROOT/build_san" "${SAN_GTESTS:-_gtest_}" asan
   step_done "asan gtests"
 }
 
