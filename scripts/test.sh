@@ -9,9 +9,10 @@
 # "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-# Phase timing: wall time and the CPU time (user + system) of the finished
-# child processes, printed after each phase and summed up at the end (the
-# background sanitizer stage prints its own, see build_san.log).
+# Phase timing: wall time and the CPU time (user + system) of the child
+# processes finished in the phase, printed after each phase and again at the
+# end (the background sanitizer stage counts when it is waited for; its
+# steps print their own, see build_san.log).
 TIMES=()
 T_WALL=$SECONDS
 T_CPU=0
@@ -119,7 +120,8 @@ if [ -n "$san_pid" ]; then
   fi
   phase_done "wait for sanitizers"
 fi
-echo "== time per phase (CPU: this script's children; the sanitizer stage's own is in its log above)"
+echo "== time per phase (CPU: of the processes the phase waited for; the sanitizer stage's, all of it, counts"
+echo "   in the phase that waits for it; its steps are in its log above)"
 printf '   %s\n' "${TIMES[@]}"
 
 # A ctest failure the result files do not show (a test that crashed before
