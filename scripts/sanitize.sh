@@ -23,9 +23,10 @@
 # directory is configured once; make re-runs cmake when a CMakeLists changes.
 # Each step prints its wall and CPU time. SAN_GTESTS (a ctest regex, default
 # _gtest_) narrows the ASan gtests run by hand.
-#   scripts/sanitize.sh [all|build|run|fuzz]  all (default): ASan build,
-#       its gtests, the fuzzers, TSan build, its gtests; build / run: the
-#       builds / the rest; fuzz: only the fuzzers. test.sh starts `all` at
+#   scripts/sanitize.sh [all|build|run|fuzz]  all (default): the ASan
+#       build, then two lanes of one core each: its gtests | the fuzzers,
+#       the TSan build, its gtests; build / run: the builds / the rest, one
+#       after the other; fuzz: only the fuzzers. test.sh starts `all` at
 #       the start of the run in the background (nice 19).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -66,10 +67,10 @@ gtest_targets() {
 # broken target does not hide the others); a failed build is one failed case
 # (BUILD_DIR/NAME.xml, copied to the results by the run phase).
 san_build() {
-  local build=$1 name=$2 rc try failed
+  local build=$1 name=$2 rc failed
   shift 2
   rm -f "$build/$name.xml"
-  for try in 1 2 3; do
+  for _ in 1 2 3; do
     set +e
     make -C "$build" -k -j"$JOBS" "$@" >"$build/make.log" 2>&1
     rc=$?
@@ -213,16 +214,34 @@ run_tsan() {
   step_done "tsan gtests"
 }
 
+# lane FUNCTION...: runs them in a background subshell with its own step
+# timing (a subshell's `times` starts from zero).
+lane() {
+  (
+    T_WALL=$SECONDS
+    T_CPU=0
+    for f in "$@"; do "$f"; done
+  ) &
+}
+
 if [ "${SANITIZE:-1}" = 0 ]; then exit 0; fi
 case "${1:-all}" in
   all)
     build_asan
     copy_build_results
-    run_asan
-    run_fuzz
-    build_tsan
-    copy_build_results
-    run_tsan
+    # Two lanes, one core each: the ASan gtests (one at a time, as ctest
+    # runs the normal ones: some measure time) beside the fuzzers (one at
+    # a time), the TSan build and the TSan gtests.
+    JOBS=1
+    lane run_asan
+    asan_lane=$!
+    lane run_fuzz build_tsan copy_build_results run_tsan
+    other_lane=$!
+    rc=0
+    wait "$asan_lane" || rc=1
+    wait "$other_lane" || rc=1
+    step_done "both lanes"
+    exit "$rc"
     ;;
   build)
     build_asan
