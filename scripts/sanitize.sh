@@ -70,7 +70,7 @@ san_build() {
   local build=$1 name=$2 rc failed
   shift 2
   rm -f "$build/$name.xml"
-  for _ in 1 2 3; do
+  for _ in 1 2 3 4; do
     set +e
     make -C "$build" -k -j"$JOBS" "$@" >"$build/make.log" 2>&1
     rc=$?
