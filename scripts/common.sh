@@ -22,10 +22,15 @@ ensure_setup() {
   if [ -n "$(missing_packages)" ]; then "$ROOT/scripts/setup.sh"; fi
 }
 
-# Builds the workspace (Debug-free RelWithDebInfo by default; BUILD_TYPE overrides).
+# Builds the workspace. BUILD_TYPE=Release by default, with the optimisation
+# of RelWithDebInfo (-O2 -DNDEBUG) but no debug information: the same
+# programs, compiled in less CPU time (-g cost 25-47 % more per file) and
+# linked from objects 15-25 times smaller (measured for issue 19).
+# BUILD_TYPE=RelWithDebInfo (-O2 -g) or Debug for a debugger.
 build_workspace() {
   cd "$ROOT"
-  catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo}" -j"$JOBS" "$@"
+  catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" \
+    -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -j"$JOBS" "$@"
 }
 
 # Picks a free TCP port for a private ROS master, so runs never collide.

@@ -11,6 +11,9 @@
       (CTEST_JUNIT: ctest --output-junit) whose file shows no failure gets
       one more failed case, with the test's output: the binary's exit
       status, e.g. a LeakSanitizer report at exit after the last case passed.
+      A binary that left no result file (catkin's MISSING-gtest-*.xml: not
+      built, or killed by a sanitizer report) is one failed case with its
+      output (the report).
 """
 import os
 import shutil
@@ -66,11 +69,18 @@ def collect(src, dest, suffix, ctest_junit):
             # killed by a sanitizer report).
             out_dir = os.path.join(dest, f"{pkg}_{suffix}")
             os.makedirs(out_dir, exist_ok=True)
+            missing = f.startswith("MISSING-gtest-")
+            target = f[len("MISSING-gtest-" if missing else "gtest-"):-len(".xml")]
+            ctest_name = f"_ctest_{pkg}_gtest_{target}"
+            if missing and ctest_name in failed:
+                # The binary died (e.g. a sanitizer report ends it): one
+                # failed case whose text is its output, the report.
+                write_case(os.path.join(out_dir, f), f"{pkg}_{suffix}", f"{target} left no result",
+                           False, failed[ctest_name])
+                continue
             shutil.copy(os.path.join(src, pkg, f), os.path.join(out_dir, f))
             if not f.startswith("gtest-"):
                 continue
-            target = f[len("gtest-"):-len(".xml")]
-            ctest_name = f"_ctest_{pkg}_gtest_{target}"
             if ctest_name in failed and not has_failure(os.path.join(src, pkg, f)):
                 write_case(os.path.join(out_dir, f"exit-{target}.xml"), f"{pkg}_{suffix}",
                            f"{target} exit status", False, failed[ctest_name])
