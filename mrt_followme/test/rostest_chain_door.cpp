@@ -26,7 +26,7 @@ TEST(FollowMeChain, ClosedDoorReplansThroughAnotherDoor) {
   };
   auto truth = nh.subscribe<nav_msgs::Odometry>("/robot1/ground_truth", 100, on_truth);
   std::size_t plans_at_close = 0;
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(130.0);
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(200.0);
   while (ros::ok() && !obs.summary.received && ros::WallTime::now() < end) {
     ros::spinOnce();
     if (plans_at_close == 0 && obs.saw("Guide | next sculpture")) {
