@@ -4,33 +4,14 @@
 // each, the wander followed (FollowVisitor) and the leg re-planned, the
 // visitor never out of sight > 10 s, nobody closer than 0.3 m, MUREA's
 // error < 10 cm (the summary of followme_monitor_node, from ground truth).
-#include <mrt_followme/SetTour.h>
-
 #include "rostest_common.h"
 
 TEST(FollowMeChain, TourWithOneWander) {
   ros::NodeHandle nh;
   FollowMeObserver obs(nh);
-  // The dialogue refuses a tour naming an exhibit twice (and keeps its own).
-  ASSERT_TRUE(ros::service::waitForService("/robot1/guide/set_tour", ros::Duration(30.0)));
-  mrt_followme::SetTour srv;
-  srv.request.exhibits = {"statue", "statue"};
-  ASSERT_TRUE(ros::service::call("/robot1/guide/set_tour", srv));
-  EXPECT_FALSE(srv.response.accepted);
-  EXPECT_EQ(srv.response.message, "exhibit 'statue' twice in the tour");
-
+  ASSERT_NO_FATAL_FAILURE(expect_twice_refused("/robot1/guide/set_tour", 30.0));
   ASSERT_TRUE(obs.wait(130.0)) << "no summary; last status: " << (obs.statuses.empty() ? "" : obs.statuses.back());
-  const Summary& s = obs.summary;
-  EXPECT_TRUE(s.completed) << s.text;
-  EXPECT_EQ(s.visited, 4) << s.text;
-  EXPECT_EQ(s.names, "statue, pedestal, sculpture, vase");
-  EXPECT_EQ(s.wanders, 1);
-  EXPECT_LE(s.unseen, 10.0);
-  EXPECT_GE(s.person_gap, 0.3);
-  EXPECT_GE(s.pose_error, 0.0);
-  EXPECT_LT(s.pose_error, 0.10);
-  for (const char* e : {"statue", "pedestal", "sculpture", "vase"})
-    EXPECT_TRUE(obs.saw(std::string("WaitVisitor | next ") + e)) << e;
+  expect_tour_with_one_wander(obs);
   // It followed the visitor, then re-planned (SCARE's Replan task, SPIKE's
   // leg from where the wander left the robot).
   std::size_t follow = obs.statuses.size(), replan = obs.statuses.size();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <mrt_followme/SetTour.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
@@ -91,4 +92,31 @@ inline bool crosses(const nav_msgs::Path& path, double x_line, double y0, double
     if (y >= y0 && y <= y1) return true;
   }
   return false;
+}
+
+// The dialogue (`service`) refuses a tour naming an exhibit twice.
+inline void expect_twice_refused(const std::string& service, double wait_s) {
+  ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(wait_s)));
+  mrt_followme::SetTour srv;
+  srv.request.exhibits = {"statue", "statue"};
+  ASSERT_TRUE(ros::service::call(service, srv));
+  EXPECT_FALSE(srv.response.accepted);
+  EXPECT_EQ(srv.response.message, "exhibit 'statue' twice in the tour");
+}
+
+// The bounds on the 4-exhibit tour with one wander: every exhibit
+// in order, the wander, the visitor never out of sight > 10 s, nobody
+// closer than 0.3 m, MUREA's error < 10 cm, a WaitVisitor at each exhibit.
+inline void expect_tour_with_one_wander(const FollowMeObserver& obs) {
+  const Summary& s = obs.summary;
+  EXPECT_TRUE(s.completed) << s.text;
+  EXPECT_EQ(s.visited, 4) << s.text;
+  EXPECT_EQ(s.names, "statue, pedestal, sculpture, vase");
+  EXPECT_EQ(s.wanders, 1);
+  EXPECT_LE(s.unseen, 10.0);
+  EXPECT_GE(s.person_gap, 0.3);
+  EXPECT_GE(s.pose_error, 0.0);
+  EXPECT_LT(s.pose_error, 0.10);
+  for (const char* e : {"statue", "pedestal", "sculpture", "vase"})
+    EXPECT_TRUE(obs.saw(std::string("WaitVisitor | next ") + e)) << e;
 }
