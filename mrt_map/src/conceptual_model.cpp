@@ -80,7 +80,7 @@ class ModelLoader {
       if (b.IsNull()) continue;
       r_.map(b, what, {"parent", "attributes", "motion", "accel_noise", "init_speed_sigma", "default_sigma",
                        "refined_by", "velocity_tau", "drop_after", "max_sigma", "max_count",
-                       "quiet_accel_noise", "quiet_nis"});
+                       "imm"});
       if (const YAML::Node p = b["parent"]) {
         const int pi = m_.find(r_.string(p, "parent"));
         if (pi < 0) r_.fail(p, "unknown parent class '" + p.Scalar() + "' of '" + what + "'");
@@ -103,6 +103,21 @@ class ModelLoader {
     for (std::size_t i : order) body(m_.classes_[i], bodies[i]);
   }
 
+  void imm(ClassDef& c, const YAML::Node& n) {
+    const std::string what = c.name + ".imm";
+    r_.map(n, what, {"quiet_accel_noise", "kicked_accel_noise", "p_quiet_to_kicked", "p_kicked_to_quiet"});
+    if (c.motion != MotionModel::kConstantVelocity) r_.fail(n, "'imm' needs motion 'constant_velocity' in '" + c.name + "'");
+    ImmDef& d = c.imm;
+    d.on = true;
+    d.quiet_accel_noise = r_.non_negative(n, "quiet_accel_noise", d.quiet_accel_noise);
+    d.kicked_accel_noise = r_.non_negative(n, "kicked_accel_noise", d.kicked_accel_noise);
+    for (auto [key, v] : {std::make_pair("p_quiet_to_kicked", &d.p_quiet_to_kicked),
+                          std::make_pair("p_kicked_to_quiet", &d.p_kicked_to_quiet)}) {
+      *v = r_.non_negative(n, key, *v);
+      if (*v > 1.0) r_.fail(n[key], std::string("expected a probability in [0, 1] for '") + key + "' in '" + what + "'");
+    }
+  }
+
   void body(ClassDef& c, const YAML::Node& b) {
     if (c.parent >= 0) {  // inherit tracking settings
       const ClassDef& p = m_.at(c.parent);
@@ -113,8 +128,7 @@ class ModelLoader {
       c.velocity_tau = p.velocity_tau;
       c.drop_after = p.drop_after;
       c.max_sigma = p.max_sigma;
-      c.quiet_accel_noise = p.quiet_accel_noise;
-      c.quiet_nis = p.quiet_nis;
+      c.imm = p.imm;
     }
     if (b.IsNull()) return;
     if (const YAML::Node mo = b["motion"]) {
@@ -129,8 +143,7 @@ class ModelLoader {
     c.velocity_tau = r_.non_negative(b, "velocity_tau", c.velocity_tau);
     c.drop_after = r_.non_negative(b, "drop_after", c.drop_after);
     c.max_sigma = r_.non_negative(b, "max_sigma", c.max_sigma);
-    c.quiet_accel_noise = r_.non_negative(b, "quiet_accel_noise", c.quiet_accel_noise);
-    c.quiet_nis = r_.non_negative(b, "quiet_nis", c.quiet_nis);
+    if (const YAML::Node im = b["imm"]) imm(c, im);
     if (const YAML::Node mc = b["max_count"]) {
       const double v = r_.non_negative(b, "max_count", 0.0);
       if (v != std::floor(v) || v > 1000.0) r_.fail(mc, "expected a whole number <= 1000 for 'max_count'");

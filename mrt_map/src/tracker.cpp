@@ -5,6 +5,7 @@
 #include <set>
 
 #include "mrt_map/assignment.h"
+#include "mrt_map/imm.h"
 #include "mrt_map/kalman.h"
 
 namespace mrt::map {
@@ -33,20 +34,17 @@ Anchor& Tracker::create(double now, int class_index, double degree) {
   return anchors_.back();
 }
 
-const Estimate& Tracker::own_estimate(const Anchor& a) const {
-  // The quiet filter's extrapolation is over-confident across an unseen
-  // manoeuvre: it stands for the object only while the own sensors see it.
-  return a.has_quiet && a.local_last_seen >= prev_now_ ? a.quiet : a.local;
-}
-
 void Tracker::cycle(double now, const std::vector<Observation>& observations, std::vector<RemoteTrack> remote) {
-  prev_now_ = now_;
   now_ = now;
   for (Anchor& a : anchors_) {
     const ClassDef& c = model_.at(a.class_index);
     a.fused = predict(a.fused, c, now);
-    if (a.has_local) a.local = predict(a.local, c, now);
-    if (a.has_quiet) a.quiet = predict(a.quiet, c, now, c.quiet_accel_noise);
+    if (a.has_imm) {
+      imm_predict(a.imm, c, now);
+      a.local = imm_combine(a.imm);
+    } else if (a.has_local) {
+      a.local = predict(a.local, c, now);
+    }
     a.remote.clear();
   }
   seen_.clear();
@@ -94,8 +92,8 @@ void Tracker::coalesce() {
       if (gone.has_local && (!keep.has_local || gone.local_last_seen > keep.local_last_seen)) {
         keep.local = gone.local;
         keep.has_local = true;
-        keep.quiet = gone.quiet;
-        keep.has_quiet = gone.has_quiet;
+        keep.imm = gone.imm;
+        keep.has_imm = gone.has_imm;
         keep.local_hits = std::max(keep.local_hits, gone.local_hits);
         keep.local_last_seen = gone.local_last_seen;
       }
@@ -193,33 +191,30 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
 void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
   Anchor* a = &anchor;
   const ClassDef& c = model_.at(a->class_index);
+  const bool imm = c.imm.on && c.motion == MotionModel::kConstantVelocity;
   if (!a->has_local) {
     a->local = initialize(o, c);
     a->local = predict(a->local, c, now);
     a->has_local = true;
-    a->has_quiet = false;
+    a->has_imm = imm;
+    if (imm) a->imm = imm_start(a->local, c.imm);
     a->local_hits = 0;
     if (a->hits == 0) a->fused = a->local;
   } else {
     if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
-      // Manoeuvre: forget the velocity, keep the symbol.
-      a->local.P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
-      a->local.P.block<2, 2>(0, 2).setZero();
-      a->local.P.block<2, 2>(2, 0).setZero();
-      a->local.P.topLeftCorner<2, 2>() += o.R;
+      // Manoeuvre: forget the velocity, keep the symbol (in every model).
+      for (Estimate* e : {&a->local, &a->imm.model[0], &a->imm.model[1]}) {
+        e->P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
+        e->P.block<2, 2>(0, 2).setZero();
+        e->P.block<2, 2>(2, 0).setZero();
+        e->P.topLeftCorner<2, 2>() += o.R;
+      }
     }
-    update(a->local, o.z, o.R);
-  }
-  if (c.quiet_accel_noise > 0.0 && c.motion == MotionModel::kConstantVelocity) {
-    // The quiet filter: updated while the observations fit it; at a
-    // manoeuvre (or at the start) it restarts from the main filter, which
-    // has followed the manoeuvre with its larger process noise.
-    const double nis_max = c.quiet_nis > 0.0 ? c.quiet_nis : model_.tracker().gate;
-    if (a->has_quiet && mahalanobis2(a->quiet, o.z, o.R) <= nis_max) {
-      update(a->quiet, o.z, o.R);
+    if (a->has_imm) {
+      imm_update(a->imm, o.z, o.R);
+      a->local = imm_combine(a->imm);
     } else {
-      a->quiet = a->local;
-      a->has_quiet = true;
+      update(a->local, o.z, o.R);
     }
   }
   ++a->local_hits;
@@ -345,7 +340,7 @@ void Tracker::fuse(double now) {
   const bool ci = model_.team().covariance_intersection;
   for (Anchor& a : anchors_) {
     std::vector<const Estimate*> parts;
-    if (a.has_local) parts.push_back(&own_estimate(a));
+    if (a.has_local) parts.push_back(&a.local);
     for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
     if (parts.empty()) continue;
     Estimate f = *parts[0];
@@ -380,7 +375,7 @@ void Tracker::life_cycle(double now) {
     // Predicted out of the world (model `world:`): nothing real is there.
     if (!model_.world().contains(a.fused.x(0), a.fused.x(1))) a.status = AnchorStatus::kDropped;
     if (a.has_local && now - a.local_last_seen > drop_after) {
-      a.has_local = a.has_quiet = false;
+      a.has_local = a.has_imm = false;
       a.local_hits = 0;
     }
   }
@@ -427,7 +422,7 @@ std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
     t.id = a.id;
     t.class_index = a.class_index;
     t.degree = a.degree;
-    t.estimate = own_estimate(a);
+    t.estimate = a.local;
     t.last_seen = a.local_last_seen;
     for (const std::string& s : a.sources)
       if (s.rfind(robot + "/", 0) == 0) t.sensors.insert(s);

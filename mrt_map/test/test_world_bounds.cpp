@@ -1,6 +1,5 @@
 // The extent of the world (model `world:`): observations, teammates'
-// anchors and predictions outside it are dropped; and the quiet own filter
-// (class quiet_accel_noise) with its restart at a manoeuvre.
+// anchors and predictions outside it are dropped.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,47 +104,4 @@ TEST(Tracker, DropsAnAnchorPredictedOutOfTheWorld) {
     tr.cycle(1.1, {}, {});
     EXPECT_EQ(tr.anchors().size(), bounded ? 0u : 1u);
   }
-}
-
-TEST(Tracker, QuietFilterBetweenManoeuvres) {
-  // Main own filter: q = accel_noise^2 = 1; quiet filter: q = 1e-12 (~0).
-  // t = 0: z = (0, 0), R = 0.01 I, init_speed_sigma 1: both filters start
-  // with P = diag(0.01, 0.01, 1, 1), x = 0 (the quiet one a copy).
-  // t = 1, z = (1, 0), R = 0.01 I. Quiet: P_pp = 0.01 + 1 = 1.01, P_pv = 1,
-  // S = 1.02, d2 = 1 / 1.02 = 0.98 <= gate 9.21: updated, x = 1.01 / 1.02 =
-  // 0.990196, vx = 1 / 1.02 = 0.980392. Main: P_pp = 1.01 + 1/3 = 1.343333,
-  // P_pv = 1 + 1/2 = 1.5, S = 1.353333, x = 0.992611, vx = 1.108374. The
-  // anchor's estimate (fused, sent to teammates) is the quiet one.
-  const ConceptualModel m = ConceptualModel::parse(
-      "classes:\n"
-      "  Moving: {motion: constant_velocity, accel_noise: 1, init_speed_sigma: 1, quiet_accel_noise: 1e-6}\n"
-      "  Ball: {parent: Moving}\n"
-      "tracker: {gate: 9.21, confirm_hits: 1, coast_after: 0.3, drop_after: 3.0, max_sigma: 100,\n"
-      "          maneuver_radius: 20}\n",
-      "m.yaml");
-  const int ball = m.find("Ball");
-  EXPECT_DOUBLE_EQ(m.at(ball).quiet_accel_noise, 1e-6);  // inherited
-  EXPECT_DOUBLE_EQ(m.at(ball).quiet_nis, 0.0);           // 0: tracker.gate
-  Tracker tr(m);
-  tr.cycle(0.0, {obs(ball, 0, 0, 0.01, 0.0)}, {});
-  ASSERT_EQ(tr.anchors().size(), 1u);
-  ASSERT_TRUE(tr.anchors()[0].has_quiet);
-  EXPECT_NEAR(tr.anchors()[0].quiet.P(2, 2), 1.0, 1e-12);
-  tr.cycle(1.0, {obs(ball, 1, 0, 0.01, 1.0)}, {});
-  const Anchor& a = tr.anchors()[0];
-  EXPECT_NEAR(a.quiet.x(0), 0.990196, 1e-6);
-  EXPECT_NEAR(a.quiet.x(2), 0.980392, 1e-6);
-  EXPECT_NEAR(a.local.x(0), 0.992611, 1e-6);
-  EXPECT_NEAR(a.local.x(2), 1.108374, 1e-6);
-  EXPECT_NEAR(a.fused.x(0), 0.990196, 1e-6);
-  EXPECT_EQ(tr.local_tracks("r1").at(0).estimate.x(2), a.quiet.x(2));
-  // t = 2: z = (10, 0), 8 m off both predictions (d2 in the hundreds, > 9.21):
-  // a manoeuvre (within maneuver_radius 20): the main filter forgets its
-  // velocity, and the quiet one restarts as a copy of the main one.
-  tr.cycle(2.0, {obs(ball, 10, 0, 0.01, 2.0)}, {});
-  const Anchor& b = tr.anchors()[0];
-  EXPECT_EQ(b.id, 1u);
-  EXPECT_EQ(b.quiet.x, b.local.x);
-  EXPECT_EQ(b.quiet.P, b.local.P);
-  EXPECT_GT(b.local.x(0), 9.0);
 }

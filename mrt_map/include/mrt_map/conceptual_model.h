@@ -27,6 +27,17 @@ struct AttributeMatcher {
   double match(double value, const std::string& symbol) const;
 };
 
+/// The interacting multiple model of a constant-velocity class (imm.h):
+/// two CV models on the own observations, mixed by a Markov chain whose
+/// switching probabilities apply per prediction (per MAP cycle).
+struct ImmDef {
+  bool on = false;
+  double quiet_accel_noise = 0.5;   // m/s^2, the quiet model (rolling)
+  double kicked_accel_noise = 0.0;  // m/s^2, the kicked model (0 = the class's accel_noise)
+  double p_quiet_to_kicked = 0.02;  // per cycle
+  double p_kicked_to_quiet = 0.1;   // per cycle
+};
+
 struct ClassDef {
   std::string name;
   int parent = -1;
@@ -41,11 +52,7 @@ struct ClassDef {
                                  // Ornstein-Uhlenbeck); 0 = constant velocity, no decay
   double drop_after = 0.0;       // s, per-class tracker.drop_after (0 = the tracker's)
   double max_sigma = 0.0;        // m, per-class tracker.max_sigma (0 = the tracker's)
-  double quiet_accel_noise = 0.0;  // CV only, m/s^2: a second, quiet own filter with this
-                                   // process noise gives the estimate between manoeuvres (0 = off)
-  double quiet_nis = 0.0;          // chi-square: an own observation farther than this from the
-                                   // quiet filter is a manoeuvre: it restarts from the main one
-                                   // (0 = tracker.gate)
+  ImmDef imm;                    // CV only: the own filter is an IMM of two CV models (class `imm:`)
   bool refined_by_teammate_pose = false;  // a Robot becomes this class near a teammate
   int max_count = 0;             // cardinality: at most this many objects of the class
                                  // (and its subclasses) exist; 0 = unknown. Not inherited.

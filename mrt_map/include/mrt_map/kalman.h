@@ -15,7 +15,7 @@ Mat4 transition(const ClassDef& c, double dt);
 /// Process noise over dt. Constant velocity: continuous white acceleration
 /// of spectral density q = accel_noise^2: q*[dt^3/3 I, dt^2/2 I; dt^2/2 I, dt I].
 /// Static: q*dt on the position only (a slow drift), none on the velocity.
-/// `accel_noise` >= 0 replaces the class's (the quiet filter's).
+/// `accel_noise` >= 0 replaces the class's (an IMM model's).
 Mat4 process_noise(const ClassDef& c, double dt, double accel_noise = -1.0);
 
 /// A new estimate from a first observation: velocity 0 with variance

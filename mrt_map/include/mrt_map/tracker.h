@@ -72,17 +72,12 @@ class Tracker {
   /// observations than lost anchors).
   std::vector<int> claim_lost(int card_class, const std::vector<std::pair<Vec2, Mat2>>& zs) const;
   void apply_local(double now, Anchor& a, const Observation& o);
-  /// The own estimate given to the fusion and the teammates: the quiet
-  /// filter while the own sensors saw the object this or the previous
-  /// cycle, else the main own filter.
-  const Estimate& own_estimate(const Anchor& a) const;
-
   const ConceptualModel& model_;
   Merger merger_;
   std::vector<Anchor> anchors_;
   std::uint32_t next_id_ = 1;
   std::uint64_t dropped_ = 0, coalesced_ = 0, coalesced_cycle_ = 0;
-  double now_ = 0.0, prev_now_ = 0.0;  // this cycle's and the previous cycle's time
+  double now_ = 0.0;  // this cycle's time
   std::map<std::pair<std::uint32_t, std::uint32_t>, double> close_since_;  // coalescence candidates
   struct TeammatePose {
     Vec2 p;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -61,6 +62,12 @@ struct Estimate {
   double stamp = 0.0;
 };
 
+/// The two-model (quiet, kicked) IMM state of an own filter (imm.h).
+struct ImmState {
+  std::array<Estimate, 2> model;       // 0 quiet, 1 kicked
+  std::array<double, 2> mu{0.5, 0.5};  // mode probabilities
+};
+
 enum class AnchorStatus : std::uint8_t { kTentative = 0, kConfirmed = 1, kCoasting = 2, kDropped = 3 };
 const char* to_string(AnchorStatus s);
 
@@ -87,8 +94,8 @@ struct Anchor {
   Estimate local;
   int local_hits = 0;
   double local_last_seen = 0.0;
-  bool has_quiet = false;    // the quiet own filter (class quiet_accel_noise), restarted
-  Estimate quiet;            // from `local` at each manoeuvre; the own estimate when set
+  bool has_imm = false;      // the own filter is an IMM (class `imm:`); `local` is then
+  ImmState imm;              // its combined estimate
   int hits = 0;              // cycles with support (own or teammates')
   double first_seen = 0.0;
   double last_seen = 0.0;    // own or teammates'
