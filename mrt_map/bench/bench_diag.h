@@ -33,6 +33,11 @@ struct BallDiag {
   std::vector<double> errors;
   ErrorBin local_fresh, fused_when_local_fresh;  // the robot sees it itself this step
   ErrorBin fused_from_teammates;                 // it does not: its teammates' anchors only
+  ErrorBin teammate_each, teammate_newest, own_stale;  // ... per source
+  std::array<ErrorBin, 3> teammate_by_age;       // its own sighting 0-0.1, 0.1-0.2, >= 0.2 s old
+  ErrorBin teammate_no_kick_since;               // no kick since its sighting
+  ErrorBin teammates_linked;
+  ErrorBin local_fresh_velocity, local_fresh_velocity_rolling;  // own filter's velocity error (m/s)                     // (rmse of the count: sqrt(mean n^2))
   void error(double e, double since_kick, double nearest, int observers) {
     errors.push_back(e);
     (since_kick < 0.5 ? just_kicked : rolling).add(e);
@@ -51,6 +56,15 @@ struct BallDiag {
                 fused_when_local_fresh.rmse(), local_fresh.rmse(), local_fresh.n);
     std::printf("map_ball_rmse_team_from_teammates_only_within_5m: %.4f m (%ld samples)\n",
                 fused_from_teammates.rmse(), fused_from_teammates.n);
+    std::printf("diag_ball_teammates_only_per_source: each teammate's anchor %.4f m, the newest %.4f m, "
+                "own stale filter %.4f m (%ld samples), linked teammates %.2f\n",
+                teammate_each.rmse(), teammate_newest.rmse(), own_stale.rmse(), own_stale.n, teammates_linked.rmse());
+    std::printf("diag_ball_teammate_anchor_by_age: 0-0.1 s %.4f m (%ld), 0.1-0.2 s %.4f m (%ld), >= 0.2 s %.4f m (%ld); "
+                "no kick since its sighting %.4f m\n",
+                teammate_by_age[0].rmse(), teammate_by_age[0].n, teammate_by_age[1].rmse(), teammate_by_age[1].n,
+                teammate_by_age[2].rmse(), teammate_by_age[2].n, teammate_no_kick_since.rmse());
+    std::printf("diag_ball_own_filter_velocity_rmse_robot_sees_it: %.4f m/s (> 0.5 s after a kick %.4f m/s)\n",
+                local_fresh_velocity.rmse(), local_fresh_velocity_rolling.rmse());
     std::printf("diag_ball_rmse_just_kicked: %.4f m (%ld samples)\n", just_kicked.rmse(), just_kicked.n);
     std::printf("diag_ball_rmse_rolling: %.4f m (%ld samples)\n", rolling.rmse(), rolling.n);
     const char* d[] = {"0_2m", "2_4m", "4_5m"};

@@ -62,6 +62,7 @@ struct BallTruth {
   bool near_observer;  // within 5 m of the nearest robot that has it in view (range, occlusion)
   int observers;     // robots with the ball in view
   double since_kick;
+  Vec2 v;            // the ball's velocity
 };
 
 void score_ball(const WorldModel& w, int ball_class, double now, const BallTruth& t, Stats& s,
@@ -92,9 +93,24 @@ void score_ball(const WorldModel& w, int ball_class, double now, const BallTruth
                 a->fused.x(1), a->fused.x(2), a->fused.x(3), t.since_kick, a->id);
   if (a && t.near && a->has_local && a->local_last_seen >= now) {
     diag->local_fresh.add((a->local.x.head<2>() - t.p).norm());
+    diag->local_fresh_velocity.add((a->local.x.tail<2>() - t.v).norm());
+    if (t.since_kick > 0.5) diag->local_fresh_velocity_rolling.add((a->local.x.tail<2>() - t.v).norm());
     diag->fused_when_local_fresh.add(e);
   } else if (a && t.near) {
     diag->fused_from_teammates.add(e);
+    // Per source: each teammate's latency-compensated anchor alone, and
+    // the most recently seen one (what the fusion could do at best/worst).
+    const RemoteTrack* newest = nullptr;
+    for (const auto& [robot, r] : a->remote) {
+      const double err = (r.estimate.x.head<2>() - t.p).norm(), age = now - r.last_seen;
+      diag->teammate_each.add(err);
+      diag->teammate_by_age[age < 0.1 ? 0 : age < 0.2 ? 1 : 2].add(err);
+      if (t.since_kick > age) diag->teammate_no_kick_since.add(err);
+      if (!newest || r.last_seen > newest->last_seen) newest = &r;
+    }
+    if (newest) diag->teammate_newest.add((newest->estimate.x.head<2>() - t.p).norm());
+    if (a->has_local) diag->own_stale.add((a->local.x.head<2>() - t.p).norm());
+    diag->teammates_linked.add(static_cast<double>(a->remote.size()));
   }
 }
 
@@ -275,7 +291,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
       for (int i = 0; i < n; ++i) team[i]->add_teammate_model(m.robot, m.tracks, m.stamp, &m.pose);
       network.pop_front();
     }
-    BallTruth truth{sim.ball().p, false, INFINITY, false, 0, sim.since_kick()};
+    BallTruth truth{sim.ball().p, false, INFINITY, false, 0, sim.since_kick(), sim.ball().v};
     for (const auto& b : sim.mates()) truth.nearest = std::min(truth.nearest, (b.p - sim.ball().p).norm());
     for (int i = 0; i < n; ++i) {
       const bool sees = sim.ball_in_view(i, cam);
