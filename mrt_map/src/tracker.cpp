@@ -48,6 +48,7 @@ void Tracker::cycle(double now, const std::vector<Observation>& observations, st
     a.remote.clear();
   }
   seen_.clear();
+  own_seen_.clear();
   coalesced_cycle_ = 0;
   associate_local(now, observations);
   associate_remote(now, remote);
@@ -71,6 +72,12 @@ void Tracker::coalesce() {
       Anchor& b = anchors_[j];
       if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
       if (!model_.compatible(a.class_index, b.class_index)) continue;
+      // Seen apart: the own sensors took a distinct observation for each
+      // this cycle (the association gives one observation to one anchor):
+      // two objects side by side, not one with two symbols; each keeps its
+      // id. (Not extended to one teammate's two tracks: a teammate's own
+      // duplicates would then keep ours apart; measured worse in map_bench.)
+      if (own_seen_.count(a.id) && own_seen_.count(b.id)) continue;
       // Two lost anchors of a class with a cardinality: their predictions
       // meet where the objects crossed unseen; nothing says they are one.
       if (!seen_.count(a.id) && !seen_.count(b.id) && cardinality_class(a.class_index) >= 0) continue;
@@ -221,6 +228,7 @@ void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
   a->local_last_seen = a->last_seen = now;
   a->sources.insert(o.sensors.begin(), o.sensors.end());
   seen_.insert(a->id);
+  own_seen_.insert(a->id);
 }
 
 int Tracker::cardinality_class(int class_index) const {

@@ -86,6 +86,7 @@ class Tracker {
   };
   std::map<std::string, TeammatePose> teammates_;
   std::set<std::uint32_t> seen_;  // anchors supported this cycle
+  std::set<std::uint32_t> own_seen_;  // anchors an own observation updated this cycle
 };
 
 }  // namespace mrt::map
