@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,34 @@ Point2D around_robot(const Point2D& self, const Point2D& target, const Point2D& 
   const double l = std::sqrt(l2), nx = -dy / l, ny = dx / l;
   const double side = (c.x - r.x) * nx + (c.y - r.y) * ny >= 0.0 ? 1.0 : -1.0;
   return {r.x + side * nx * (kPassRobot + 0.2), r.y + side * ny * (kPassRobot + 0.2)};
+}
+
+// The visitor's place on the trail: its nearest trail point, unless the
+// robot came by the same place again later (it turned back: out to an
+// exhibit and back, a re-planned leg): then its nearest point of that later
+// pass. A trail point within kSamePlace of the nearest distance whose way
+// to the robot is shorter by more than kOtherPass belongs to a later pass;
+// points of one pass that near the visitor differ by less along the trail.
+// Without this the visitor, standing where the trail crosses itself, could
+// take the earlier pass and walk the robot's old way back and forth.
+std::size_t place_on_trail(const std::deque<Point2D>& trail, const std::vector<double>& rest, const Point2D& self) {
+  constexpr double kSamePlace = 0.3;  // m
+  constexpr double kOtherPass = 1.5;  // m along the trail
+  std::size_t j = 0;
+  for (std::size_t k = 1; k < trail.size(); ++k)
+    if (dist(self, trail[k]) < dist(self, trail[j])) j = k;
+  if (trail.empty()) return j;
+  const double near = dist(self, trail[j]) + kSamePlace;
+  double latest = rest[j];  // the shortest way to the robot from a point that near
+  for (std::size_t k = 0; k < trail.size(); ++k)
+    if (dist(self, trail[k]) <= near) latest = std::min(latest, rest[k]);
+  if (latest >= rest[j] - kOtherPass) return j;
+  std::size_t best = trail.size();
+  for (std::size_t k = 0; k < trail.size(); ++k)
+    if (dist(self, trail[k]) <= near && rest[k] <= latest + kOtherPass &&
+        (best == trail.size() || dist(self, trail[k]) < dist(self, trail[best])))
+      best = k;
+  return best;
 }
 
 }  // namespace
@@ -60,13 +89,11 @@ void VisitorModel::enter(VisitorState s, double t) {
 // straight to the point `comfortable` metres from the robot.
 VisitorStep VisitorModel::follow(const Point2D& self, const Pose2D& robot) const {
   const Point2D r{robot.x, robot.y};
-  std::size_t j = 0;
-  for (std::size_t k = 1; k < trail_.size(); ++k)
-    if (dist(self, trail_[k]) < dist(self, trail_[j])) j = k;
   // rest[k]: the way from trail point k to the robot
   std::vector<double> rest(trail_.size(), 0.0);
   for (std::size_t k = trail_.size(); k-- > 0;)
     rest[k] = k + 1 < trail_.size() ? rest[k + 1] + dist(trail_[k], trail_[k + 1]) : dist(trail_[k], r);
+  const std::size_t j = place_on_trail(trail_, rest, self);
   const double way = trail_.empty() ? dist(self, r) : std::min(dist(self, r) < 0.5 ? dist(self, r) : 1e9,
                                                                  dist(self, trail_[j]) + rest[j]);
   if (way <= opt_.comfortable + 0.25) return {self, 0.0};

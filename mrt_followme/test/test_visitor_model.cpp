@@ -66,6 +66,27 @@ TEST(VisitorModel, FollowsTheRobotsTrailRoundACorner) {
   EXPECT_DOUBLE_EQ(s.speed, 0.7);
 }
 
+TEST(VisitorModel, FollowsTheRobotsLatestPassWhereItsTrailDoublesBack) {
+  VisitorModel v(options(), {kA}, kB);
+  // The robot goes north along x = 0 to (0, 6), turns back and comes south
+  // along x = 0.0625 to (0.0625, 1), in steps of 0.125 m (every one a
+  // trail point). The visitor stands at (0.025, 3): 0.025 m from the first
+  // pass's (0, 3), 0.0375 m from the second pass's (0.0625, 3), 2 m along
+  // the trail from the robot that way (8.14 m by the first pass).
+  for (int i = 0; i <= 48; ++i) v.update(0.0, {0.025, 3.0}, Pose2D(0.0, 0.125 * i, 0));
+  VisitorStep s;
+  for (int i = 1; i <= 40; ++i) s = v.update(0.0, {0.025, 3.0}, Pose2D(0.0625, 6.0 - 0.125 * i, 0));
+  // 2 m > comfortable + 0.25 = 1.35 m: it walks, towards the robot along
+  // the second pass, to its point 0.5 m on, (0.0625, 2.5) — not north along
+  // the first pass to (0, 3.5), the robot's old way.
+  EXPECT_NEAR(s.target.x, 0.0625, 1e-12);
+  EXPECT_NEAR(s.target.y, 2.5, 1e-12);
+  EXPECT_DOUBLE_EQ(s.speed, 0.7);
+  // Near the robot (1 m behind it on the second pass, (0.0625, 2)): stands.
+  s = v.update(0.1, {0.0625, 2.0}, Pose2D(0.0625, 1.0, 0));
+  EXPECT_DOUBLE_EQ(s.speed, 0.0);
+}
+
 TEST(VisitorModel, LooksAtTheExhibitThenComesBack) {
   VisitorModel v(options(), {kA}, kB);
   // The robot waits 0.3 m from the stop (5, 0): the visitor goes to the spot.

@@ -67,9 +67,6 @@ class GuideNode {
  public:
   GuideNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, Options o)
       : opt_(std::move(o)), cfg_(load_followme_config(opt_.config)), facts_(cfg_.guide) {
-    const std::string bad = set_tour(opt_.tour.empty() ? cfg_.tour : opt_.tour);
-    if (!bad.empty())
-      throw mrt::ros_common::ParamError("tour", "exhibits of the configuration, each once (" + bad + ")");
     pose_sub_ = nh.subscribe("pose", 5, &GuideNode::on_pose, this);
     crisp_sub_ = nh.subscribe("map_crisp", 5, &GuideNode::on_crisp, this);
     status_sub_ = nh.subscribe("task_status", 50, &GuideNode::on_status, this);
@@ -85,6 +82,11 @@ class GuideNode {
     door_pub_ = nh.advertise<mrt_msgs::Percept>("door_percepts", 5);
     door_sub_ = nh.subscribe("close_door", 5, &GuideNode::on_close_door, this);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("tour_markers", 1, true);
+    // The tour once its topic is advertised: the (simulated) visitor learns
+    // it from there; published on a publisher not yet advertised it was lost.
+    const std::string bad = set_tour(opt_.tour.empty() ? cfg_.tour : opt_.tour);
+    if (!bad.empty())
+      throw mrt::ros_common::ParamError("tour", "exhibits of the configuration, each once (" + bad + ")");
     planner_ = nh.serviceClient<nav_msgs::GetPlan>(opt_.plan_service);
     service_ = pnh.advertiseService("set_tour", &GuideNode::on_set_tour, this);
     std::vector<mrt::followme::ros_glue::ExhibitRing> rings;
