@@ -4,7 +4,7 @@
 # catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
 # the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
 # libFuzzer target for a bounded time (scripts/sanitize.sh; only with
-# SANITIZE=1 for now, FUZZ_SECONDS sets the time per target, 10 by default), prints the wall
+# SANITIZE=1 for now; FUZZ_SECONDS sets the time per target, 5 by default), prints the wall
 # and CPU time of each phase, and prints, as its last line,
 # "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
