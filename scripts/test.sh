@@ -47,8 +47,11 @@ phase_done setup
 # processes of a session for scheduling (sched_autogroup_enabled, as on
 # this machine), its own scheduling group: nice alone then ranks it only
 # against its own processes and the group gets half of the CPU beside the
-# main build's group (the build phase took 701 s instead of 364 s), so the
-# group's own nice (/proc/self/autogroup) is set to the same value.
+# main build's group (likely why the build phase took 701 s instead of
+# 364 s in the fresh-clone run with the stage; two busy loops measured for
+# issue 19: `setsid nice -n 19` got 5 times the CPU of a nice 0 one in this
+# session, with its group at 19 too a twelfth), so the group's own nice
+# (/proc/self/autogroup) is set to the same value.
 san_pid=
 if [ "$SANITIZE" != 0 ]; then
   setsid bash -c 'echo "$1" >/proc/self/autogroup 2>/dev/null || true; exec nice -n "$1" "$2" all' \
