@@ -54,6 +54,7 @@ phase_done setup
 # (/proc/self/autogroup) is set to the same value.
 san_pid=
 if [ "$SANITIZE" != 0 ]; then
+  # shellcheck disable=SC2016  # expanded by the inner bash
   setsid bash -c 'echo "$1" >/proc/self/autogroup 2>/dev/null || true; exec nice -n "$1" "$2" all' \
     sanitize "${SAN_NICE:-19}" "$ROOT/scripts/sanitize.sh" >"$ROOT/build_san.log" 2>&1 &
   san_pid=$!
