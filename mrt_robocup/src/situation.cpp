@@ -11,20 +11,19 @@ constexpr double kMissing = 99999.0;  // mm: "far away", with reliability 0
 
 double dist(const Point2D& a, const Point2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-/// Distance of `p` from the segment a-b.
-double segment_distance(const Point2D& a, const Point2D& b, const Point2D& p) {
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  double t = l2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return dist({a.x + t * dx, a.y + t * dy}, p);
-}
-
 double param(const Parameters& p, const std::string& name) {
   const auto it = p.find(name);
   return it == p.end() ? 0.0 : it->second.value * it->second.reliability;
 }
 
 }  // namespace
+
+double segment_distance(const Point2D& a, const Point2D& b, const Point2D& p) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  double t = l2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return dist({a.x + t * dx, a.y + t * dy}, p);
+}
 
 double distance_mm(const Pose2D& pose, const Point2D& p) { return 1000.0 * std::hypot(p.x - pose.x, p.y - pose.y); }
 
@@ -132,37 +131,54 @@ void SituationAssessor::coordination_targets(const SituationInput& in, Situation
   }
 }
 
-void SituationAssessor::shot(const SituationInput& in, Situation& s) {
-  const FieldGeometry& f = o_.field;
-  const Point2D me{in.pose.x, in.pose.y};
-  // Aim beside the goal centre, away from the obstacle nearest the goal (the keeper).
+Shot plan_shot(const Point2D& from, const std::vector<Point2D>& obstacles, double side, const SituationOptions& o) {
+  const FieldGeometry& f = o.field;
   const Point2D centre{f.goal_x, 0.0};
-  double keeper_y = 0.0, best = std::numeric_limits<double>::infinity();
-  std::vector<Point2D> blockers;
+  // The keeper: the obstacle nearest the goal centre, within keeper_zone.
+  const Point2D* keeper = nullptr;
+  double best = o.keeper_zone;
+  for (const Point2D& p : obstacles)
+    if (dist(p, centre) < best) {
+      best = dist(p, centre);
+      keeper = &p;
+    }
+  const double aim_y = std::min(o.aim_offset, f.goal_half_width - o.ball_radius);
+  const auto aim_at = [&](double sd) { return Point2D{f.goal_x, sd * aim_y}; };
+  // The open side: the near post's, the side the ball is on. The keeper
+  // stands on the line goal centre - ball: a shot to the near post moves
+  // away from it faster than it follows (1.5 against 8 m/s), one across
+  // that line draws it into the ball's path (README "Shooting"). Near the
+  // axis the side chosen last stays (hysteresis).
+  Shot s;
+  s.side = side != 0.0 ? (side > 0.0 ? 1.0 : -1.0) : (from.y >= 0.0 ? 1.0 : -1.0);
+  if (from.y * s.side < -o.side_hysteresis) s.side = -s.side;
+  s.aim = aim_at(s.side);
+  s.spot = {f.goal_x - o.spot_depth, s.side * o.spot_offset};
+  s.keeper_clearance = keeper ? segment_distance(from, s.aim, *keeper) : std::numeric_limits<double>::infinity();
+  s.clear = dist(from, s.aim) <= o.shot_range && s.keeper_clearance >= o.keeper_clearance;
+  for (const Point2D& p : obstacles)
+    if (segment_distance(from, s.aim, p) < o.shot_clearance) s.clear = false;
+  return s;
+}
+
+void SituationAssessor::shot(const SituationInput& in, Situation& s) {
+  const Point2D me{in.pose.x, in.pose.y};
+  std::vector<Point2D> obstacles;
   for (const AnchorView& a : in.anchors) {
     if (a.reliability < o_.min_reliability || a.membership_class == o_.ball_class) continue;
     if (std::find(o_.obstacle_classes.begin(), o_.obstacle_classes.end(), a.membership_class) ==
         o_.obstacle_classes.end())
       continue;
     const Point2D p{a.x, a.y};
-    if (dist(p, me) <= o_.body_radius + 0.15) continue;  // itself
-    blockers.push_back(p);
-    if (dist(p, centre) < best) {
-      best = dist(p, centre);
-      keeper_y = p.y;
-    }
+    if (dist(p, me) > o_.body_radius + 0.15) obstacles.push_back(p);  // nearer: itself
   }
-  // The side changes only when the keeper is clearly on it (10 cm hysteresis).
-  if (best < 2.0) {
-    if (keeper_y > 0.1) aim_side_ = -1.0;
-    else if (keeper_y < -0.1) aim_side_ = 1.0;
-  } else {
-    aim_side_ = me.y >= 0.0 ? 1.0 : -1.0;
-  }
-  s.aim = {f.goal_x, aim_side_ * std::min(o_.aim_offset, f.goal_half_width - o_.ball_radius)};
-  s.shot_clear = dist(me, s.aim) <= o_.shot_range;
-  for (const Point2D& b : blockers)
-    if (segment_distance(me, s.aim, b) < o_.shot_clearance) s.shot_clear = false;
+  // The shot leaves from the ball when it is held (it sits at the kicker).
+  const Shot shot = plan_shot(s.owned && s.ball_seen ? s.ball : me, obstacles, aim_side_, o_);
+  aim_side_ = shot.side;
+  s.aim = shot.aim;
+  s.spot = shot.spot;
+  s.shot_clear = shot.clear;
+  s.keeper_clearance = shot.keeper_clearance;
 }
 
 brian::CrispDataList SituationAssessor::crisp(const Situation& s, const Pose2D& pose,
@@ -177,6 +193,7 @@ brian::CrispDataList SituationAssessor::crisp(const Situation& s, const Pose2D& 
   add("BallSeen", s.ball_reliability);
   add("BallOwned", s.owned ? 1.0 : 0.0);
   place("GoalDistance", "GoalAngle", true, s.aim);
+  place("SpotDistance", "SpotAngle", true, s.spot);
   add("ShotClear", s.shot_clear ? 1.0 : 0.0);
   place("OwnGoalDistance", "OwnGoalAngle", true, Point2D{-o_.field.goal_x, 0.0});
   place("MateDistance", "MateAngle", s.mate_known, s.mate);

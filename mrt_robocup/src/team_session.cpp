@@ -148,7 +148,7 @@ void TeamSession::Impl::coordinate(double t) {
   leaving.clear();
   for (Member& m : team) {
     if (!m.active) continue;
-    const auto crisp = team_crisp(anchor_views(*m.world, t), owns, m.player->options().situation.field);
+    const auto crisp = team_crisp(anchor_views(*m.world, t), owns, m.player->options().situation);
     msgs.push_back(m.coordinator->publish(t, sim->robots()[m.index].pose, crisp));
   }
   for (Member& m : team) {
@@ -284,6 +284,11 @@ int TeamSession::holder() const {
   for (std::size_t i = 0; i < impl_->team.size(); ++i)
     if (impl_->match->holder() == static_cast<int>(impl_->team[i].index)) return static_cast<int>(i);
   return -1;
+}
+std::vector<Point2D> TeamSession::opponents() const {
+  std::vector<Point2D> out;
+  for (const sim::Mover& m : impl_->sim->world().movers) out.push_back(m.position);
+  return out;
 }
 double TeamSession::true_speed(std::size_t i) const {
   const auto& r = impl_->sim->robots()[impl_->team.at(i).index];

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "mrt_robocup/coordination.h"
 #include "mrt_robocup/player.h"
@@ -205,6 +206,77 @@ TEST(Player, NoKickFromFarAway) {
   const PlayerOutput out = p.cycle(in);
   EXPECT_FALSE(out.kick) << out.behaviors;
   EXPECT_NEAR(out.twist.vx, 0.8, 1e-6) << out.behaviors;
+}
+
+}  // namespace
+}  // namespace mrt::robocup
+
+namespace mrt::robocup {
+namespace {
+
+// The shot (README "Shooting"), keeper at (8.4, 0), field defaults (goal at
+// x = 9, aim_offset 0.85 m, spot 3.3 m out and 1.3 m aside, hysteresis
+// 0.25 m, keeper_clearance 0.65 m, shot_clearance 0.45 m).
+TEST(Situation, ShotAtTheNearPostClearOfTheKeeper) {
+  const SituationOptions o;
+  const std::vector<Point2D> keeper{{8.4, 0.0}};
+  // From (5.4, 0.85), first shot: the +y side; the line y = 0.85 passes
+  // 0.85 m from the keeper: clear.
+  Shot s = plan_shot({5.4, 0.85}, keeper, 0.0, o);
+  EXPECT_EQ(s.side, 1.0);
+  EXPECT_NEAR(s.aim.y, 0.85, 1e-12);
+  EXPECT_NEAR(s.spot.x, 5.7, 1e-12);
+  EXPECT_NEAR(s.spot.y, 1.3, 1e-12);
+  EXPECT_NEAR(s.keeper_clearance, 0.85, 1e-9);
+  EXPECT_TRUE(s.clear);
+  // From (6.4, -0.2), last side +1: -0.2 m is within the hysteresis, the
+  // aim stays at (9, 0.85); line direction (2.6, 1.05), keeper offset
+  // (2.0, 0.2): |2.0 * 1.05 - 0.2 * 2.6| / sqrt(2.6^2 + 1.05^2)
+  // = 1.58 / 2.80401 = 0.56348 m: beyond shot_clearance, short of the
+  // keeper's 0.65 m: not clear.
+  s = plan_shot({6.4, -0.2}, keeper, 1.0, o);
+  EXPECT_EQ(s.side, 1.0);
+  EXPECT_NEAR(s.keeper_clearance, 0.56348, 1e-5);
+  EXPECT_FALSE(s.clear);
+  // From (5.4, -0.5): beyond the hysteresis, the -y side; direction
+  // (3.6, -0.35), offset (3.0, 0.5): |3.0 * -0.35 - 0.5 * 3.6| /
+  // sqrt(3.6^2 + 0.35^2) = 2.85 / 3.61697 = 0.78795 m: clear.
+  s = plan_shot({5.4, -0.5}, keeper, 1.0, o);
+  EXPECT_EQ(s.side, -1.0);
+  EXPECT_NEAR(s.aim.y, -0.85, 1e-12);
+  EXPECT_NEAR(s.spot.y, -1.3, 1e-12);
+  EXPECT_NEAR(s.keeper_clearance, 0.78795, 1e-5);
+  EXPECT_TRUE(s.clear);
+}
+
+// From (0, 0) facing +x, no keeper: the +y side; the shooting spot
+// (5.7, 1.3) is sqrt(5.7^2 + 1.3^2) = 5846.37 mm away at
+// atan2(1.3, 5.7) = 12.8477 deg.
+TEST(Situation, ShootingSpotCrisp) {
+  SituationAssessor a;
+  SituationInput in;
+  in.pose = Pose2D(0.0, 0.0, 0.0);
+  const Situation s = a.assess(in);
+  const auto c = a.crisp(s, in.pose, in.coordination);
+  EXPECT_NEAR(crisp(c, "SpotDistance"), 5846.37, 0.01);
+  EXPECT_NEAR(crisp(c, "SpotAngle"), 12.8477, 1e-4);
+}
+
+// The ball held at (6, 0.85), heading 0.03 rad: the aim (9, 0.85) is
+// 1.71887 deg to the right, NARROW 1 - 1.71887 / 2 = 0.14 < 0.49: no kick.
+// CarryBallToGoal: ShotPosition 1 (ShotClear, SHOOTING 1 at 3 m) -> Speed
+// ZERO; AimRight = RIGHT 1.71887 / 60 = 0.028648, AimAhead = 1 - 1.71887 /
+// 30 = 0.942704 -> Jog -150 * 0.028648 / 0.971352 = -4.42394 deg/s.
+TEST(Player, NoKickUntilAimedWithinOneDegree) {
+  Player p(options("differential"));
+  PlayerInput in = ball_ahead(6.0 + 0.36 * std::cos(0.03), 0.85 + 0.36 * std::sin(0.03));
+  in.pose = Pose2D(6.0, 0.85, 0.03);
+  in.possession_known = true;
+  in.possession = true;
+  const PlayerOutput out = p.cycle(in);
+  EXPECT_FALSE(out.kick) << out.behaviors;
+  EXPECT_NEAR(out.twist.vx, 0.0, 1e-9) << out.behaviors;
+  EXPECT_NEAR(out.twist.omega, common::deg_to_rad(-4.42394), 1e-6) << out.behaviors;
 }
 
 }  // namespace

@@ -29,13 +29,16 @@ void use_keeper_and_static(TeamSessionOptions& o) {
 void print_trace(const TeamSession& s, int trace_robot) {
   std::printf("t %6.1f ball %5.2f %5.2f holder %d score %d-%d |", s.time(), s.ball().x, s.ball().y, s.holder(),
               s.stats().score[0], s.stats().score[1]);
+  for (const Point2D& p : s.opponents()) std::printf(" opp %5.2f %5.2f", p.x, p.y);
+  std::printf(" |");
   for (std::size_t i = 0; i < s.robots(); ++i)
     std::printf(" %s %5.2f %5.2f %4.0f %s v%.2f w%.2f |", s.robot_name(i).c_str(), s.pose(i).x, s.pose(i).y,
                 s.pose(i).theta * 57.29578, s.job(i).c_str(), s.command(i).vx, s.command(i).omega);
   std::printf("\n");
   if (trace_robot >= 0 && static_cast<std::size_t>(trace_robot) < s.robots()) {
     const PlayerOutput& out = s.output(static_cast<std::size_t>(trace_robot));
-    std::printf("   behaviours: %s\n   crisp:", out.behaviors.c_str());
+    std::printf("   behaviours: %s\n   shot: aim %.2f %.2f keeper clearance %.2f clear %d\n   crisp:", out.behaviors.c_str(),
+                out.situation.aim.x, out.situation.aim.y, out.situation.keeper_clearance, out.situation.shot_clear ? 1 : 0);
     for (const auto& c : out.crisp)
       if (c.value != 0.0) std::printf(" %s=%.0f", c.name.c_str(), c.value);
     std::printf("\n");

@@ -28,11 +28,11 @@ std::vector<AnchorView> anchor_views(const map::WorldModel& wm, double now);
 /// SCARE's world data (m, [0, 1]) for the activity file
 /// (config/scare/robocup_team.yaml): BallX, BallY, BallSeen, BallOwned
 /// (`team_owns`: a teammate's kicker holds it), ShotClear (the ball more
-/// than 6 m from the goal, or no opponent within `clearance` of the line
-/// from the ball to the goal's open side),
+/// than shot_range from the aim; or, beyond the shooting spot, no opponent
+/// within shot_clearance of the line from the ball to the spot; or else
+/// plan_shot's shot from the ball clear: situation.h),
 /// Threat (the ball in the own third with an opponent within 1.5 m of it),
 /// ReceiveX/ReceiveY (the receiver's spot, as situation.cpp's target).
-scare::CrispMap team_crisp(const std::vector<AnchorView>& anchors, bool team_owns, const FieldGeometry& f,
-                           double clearance = 0.45);
+scare::CrispMap team_crisp(const std::vector<AnchorView>& anchors, bool team_owns, const SituationOptions& o);
 
 }  // namespace mrt::robocup

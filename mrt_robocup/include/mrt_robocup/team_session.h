@@ -90,6 +90,8 @@ class TeamSession {
   Pose2D pose(std::size_t i) const;
   Point2D ball() const;
   int holder() const;
+  /// Ground truth: the opponents' positions (the match's movers).
+  std::vector<Point2D> opponents() const;
   /// Robot i's last player output (debug).
   const PlayerOutput& output(std::size_t i) const;
 

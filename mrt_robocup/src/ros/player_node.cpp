@@ -59,6 +59,9 @@ struct NodeOptions {
         .get("play_without_referee", pl.play_without_referee)
         .get_positive("body_radius", s.body_radius)
         .get_positive("goal_x", s.field.goal_x)
+        .get_positive("keeper_clearance", s.keeper_clearance)
+        .get_positive("spot_depth", s.spot_depth)
+        .get_non_negative("spot_offset", s.spot_offset)
         .get("home_x", s.home.x)
         .get("home_y", s.home.y);
     ros_common::ParamReader::check(pl.kinematics == "differential" || pl.kinematics == "omni", "kinematics",

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     ros::NodeHandle nh, pnh("~");
     double reach = 0.25 + 0.11 + 0.08;  // body + ball + the Player's 8 cm (README "Crisp data")
     mrt::ros_common::ParamReader(pnh).get_positive("own_reach", reach);
-    const mrt::robocup::FieldGeometry field;
+    const mrt::robocup::SituationOptions situation;
     ros::Publisher pub = nh.advertise<mrt_msgs::CrispDataArray>("world_crisp", 5);
     ros::Subscriber sub = nh.subscribe<mrt_msgs::WorldModel>("world_model", 5, [&](const mrt_msgs::WorldModel::ConstPtr& m) {
       std::vector<mrt::robocup::AnchorView> anchors;
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
       }
       mrt_msgs::CrispDataArray out;
       out.header = m->header;
-      for (const auto& [name, v] : mrt::robocup::team_crisp(anchors, owns, field)) {
+      for (const auto& [name, v] : mrt::robocup::team_crisp(anchors, owns, situation)) {
         mrt_msgs::CrispData d;
         d.name = name;
         d.value = v.first;
