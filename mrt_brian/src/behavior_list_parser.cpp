@@ -19,6 +19,7 @@ std::vector<BehaviorDef> parse_behavior_list(const std::string& text, const std:
       ts.fail(lv, "expected a level number >= 1, got '" + lv.text + "'");
     b.level = static_cast<int>(level);
     b.name = ts.expect_word("a behaviour name").text;
+    b.file = file;
     b.path = ts.expect_word("the path of the behaviour file").text;
     ts.expect(Token::kClose, "')' closing the entry of " + b.name);
     out.push_back(std::move(b));

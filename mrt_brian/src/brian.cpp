@@ -100,6 +100,9 @@ bool reads_any(const ExprAst& e, const std::set<std::string>& names) {
 void Brian::check_names(const ParsedConfig& c) const {
   std::set<std::string> warned;
   for (const Diagnostic& d : validate(c)) {
+    // A name defined in two files of one slot: refused by both profiles
+    // (the 2009 engine read one file a slot; nothing legacy to keep).
+    if (d.kind == Diagnostic::kDuplicate) throw ParseError(d.file, d.line, 0, d.message);
     if (d.kind != Diagnostic::kUnknownName) continue;
     if (options_.profile == Profile::kManual) throw ParseError(d.file, d.line, 0, d.message);
     if (!warned.insert(d.message).second) continue;
@@ -124,7 +127,8 @@ void Brian::build(const ParsedConfig& c) {
   for (const auto& d : c.predicate_actions) predicate_names_.intern(d.name);
   for (const auto& b : c.behaviors) {
     if (behavior_names_.find(b.name) >= 0)
-      throw ParseError(files.behaviors, b.line, b.column, "behaviour '" + b.name + "' listed twice");
+      throw ParseError(b.file.empty() ? files.behaviors : b.file, b.line, b.column,
+                       "behaviour '" + b.name + "' listed twice");
     behavior_names_.intern(b.name);
   }
   ExpressionCompiler compiler(fuzzyfier_, predicate_names_, behavior_names_, defuzzyfier_);
@@ -146,7 +150,7 @@ void Brian::build_conditions(const ParsedConfig& c, const ExpressionCompiler& co
     for (const auto& d : defs) {
       const int id = behavior_names_.find(d.name);
       if (id < 0)
-        throw ParseError(file, d.line, d.column,
+        throw ParseError(d.file.empty() ? file : d.file, d.line, d.column,
                          std::string(what) + " for behaviour '" + d.name + "', which is not in the behaviour list");
       out.add(id, compiler.compile(d.expr, pool_));
     }
@@ -174,14 +178,14 @@ void Brian::build_behaviors(const ParsedConfig& c, const ExpressionCompiler& com
     if (kind != options_.behavior_kinds.end() && kind->second) {
       beh = kind->second(b, c.behavior_files[i], defuzzyfier_);
       if (!beh || beh->name() != b.name || beh->level() != b.level)
-        throw ParseError(files.behaviors, b.line, b.column,
+        throw ParseError(b.file.empty() ? files.behaviors : b.file, b.line, b.column,
                          "the factory for '" + kind->first + "' did not build behaviour '" + b.name + "' at its level");
     } else {
       beh = std::make_unique<RuleBehavior>(b.name, b.level, c.rules[i], c.behavior_files[i], compiler,
                                            defuzzyfier_, pool_);
     }
     if (options_.profile == Profile::kLegacy && b.level == 1 && beh->deletes())
-      throw ParseError(files.behaviors, b.line, b.column,
+      throw ParseError(b.file.empty() ? files.behaviors : b.file, b.line, b.column,
                        "behaviour '" + b.name + "' uses &DEL at level 1, where there is nothing to delete");
     engine_.add(std::move(beh));
   }

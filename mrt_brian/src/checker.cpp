@@ -1,5 +1,7 @@
 #include "mrt_brian/checker.h"
 
+#include <iterator>
+
 #include "mrt_brian/behavior_list_parser.h"
 #include "mrt_brian/lexer.h"
 #include "mrt_brian/predicate_parser.h"
@@ -50,19 +52,31 @@ class Run {
   }
 };
 
+// Every file of a slot, concatenated (each definition keeps its file).
+template <typename T, typename F>
+std::vector<T> parse_slot(Run& run, const ConfigFiles& f, Slot slot, F parse_fn) {
+  std::vector<T> out;
+  for (const std::string& file : f.all(slot)) {
+    std::vector<T> defs = run.parse<T>(file, parse_fn);
+    out.insert(out.end(), std::make_move_iterator(defs.begin()), std::make_move_iterator(defs.end()));
+  }
+  return out;
+}
+
 ParsedConfig parse_all(Run& run, const ConfigFiles& f) {
   ParsedConfig c;
   c.files = f;
-  c.shapes = run.parse<ShapeDef>(f.shape_ctof, parse_shapes);
-  c.assocs = run.parse<AssociationDef>(f.ctof, parse_associations);
-  c.predicates = run.parse<DefinitionDef>(f.predicates, parse_definitions);
-  c.predicate_actions = run.parse<DefinitionDef>(f.predicate_actions, parse_definitions);
-  c.cando = run.parse<DefinitionDef>(f.cando, parse_definitions);
-  c.behaviors = run.parse<BehaviorDef>(f.behaviors, parse_behavior_list);
-  c.want = run.parse<DefinitionDef>(f.want, parse_definitions);
-  c.out_assocs = run.parse<AssociationDef>(f.s_ftoc, parse_associations);
-  c.out_shapes = run.parse<ShapeDef>(f.s_shape, parse_shapes);
-  for (const std::string& file : {f.predicates, f.predicate_actions, f.cando, f.want}) run.block_comments(file);
+  c.shapes = parse_slot<ShapeDef>(run, f, Slot::kShapeCtof, parse_shapes);
+  c.assocs = parse_slot<AssociationDef>(run, f, Slot::kCtof, parse_associations);
+  c.predicates = parse_slot<DefinitionDef>(run, f, Slot::kPredicates, parse_definitions);
+  c.predicate_actions = parse_slot<DefinitionDef>(run, f, Slot::kPredicateActions, parse_definitions);
+  c.cando = parse_slot<DefinitionDef>(run, f, Slot::kCando, parse_definitions);
+  c.behaviors = parse_slot<BehaviorDef>(run, f, Slot::kBehaviors, parse_behavior_list);
+  c.want = parse_slot<DefinitionDef>(run, f, Slot::kWant, parse_definitions);
+  c.out_assocs = parse_slot<AssociationDef>(run, f, Slot::kSFtoc, parse_associations);
+  c.out_shapes = parse_slot<ShapeDef>(run, f, Slot::kSShape, parse_shapes);
+  for (Slot s : {Slot::kPredicates, Slot::kPredicateActions, Slot::kCando, Slot::kWant})
+    for (const std::string& file : f.all(s)) run.block_comments(file);
   for (const auto& b : c.behaviors) {
     const std::string path = f.resolve(b.path);
     c.behavior_files.push_back(path);
@@ -71,7 +85,7 @@ ParsedConfig parse_all(Run& run, const ConfigFiles& f) {
       c.rules.back() = parse_rules(read_text_file(path), path);
       run.block_comments(path);
     } catch (const ParseError& e) {
-      if (e.line() == 0) run.report(f.behaviors, b.line, "cannot open behaviour file '" + path + "'");
+      if (e.line() == 0) run.report(b.file.empty() ? f.behaviors : b.file, b.line, "cannot open behaviour file '" + path + "'");
       else run.report(e.file(), e.line(), e.message());
       run.failed.insert(path);
     }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <sstream>
+#include <utility>
 
 #include "mrt_brian/behavior_list_parser.h"
 #include "mrt_brian/lexer.h"
@@ -46,12 +48,37 @@ ConfigFiles ConfigFiles::from_directory(const std::string& dir) {
   return f;
 }
 
+const std::string& ConfigFiles::first(Slot s) const {
+  switch (s) {
+    case Slot::kCtof: return ctof;
+    case Slot::kShapeCtof: return shape_ctof;
+    case Slot::kPredicates: return predicates;
+    case Slot::kPredicateActions: return predicate_actions;
+    case Slot::kCando: return cando;
+    case Slot::kBehaviors: return behaviors;
+    case Slot::kWant: return want;
+    case Slot::kSFtoc: return s_ftoc;
+    case Slot::kSShape: return s_shape;
+  }
+  return ctof;
+}
+
+std::string& ConfigFiles::first(Slot s) { return const_cast<std::string&>(std::as_const(*this).first(s)); }
+
+std::vector<std::string> ConfigFiles::all(Slot s) const {
+  std::vector<std::string> out;
+  if (!first(s).empty()) out.push_back(first(s));
+  const auto& m = more[static_cast<std::size_t>(s)];
+  out.insert(out.end(), m.begin(), m.end());
+  return out;
+}
+
 ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
   const std::string text = read_text_file(path);
   ConfigFiles f;
   f.base_dir = fs::path(path).parent_path().string();
   if (f.base_dir.empty()) f.base_dir = ".";
-  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> slots;  // one entry a non-comment line
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -59,26 +86,22 @@ ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
     ++lineno;
     const auto b = line.find_first_not_of(" \t\r");
     if (b == std::string::npos || line[b] == '#') continue;
-    const auto e = line.find_last_not_of(" \t\r");
-    const std::string name = line.substr(b, e - b + 1);
-    if (name.find_first_of(" \t") != std::string::npos)
-      throw ParseError(path, lineno, static_cast<int>(b) + 1, "expected one file name a line, got '" + name + "'");
-    if (names.size() == 9) throw ParseError(path, lineno, static_cast<int>(b) + 1, "expected nine file names, got more");
-    names.push_back(f.resolve(name));
+    if (slots.size() == kSlotCount)
+      throw ParseError(path, lineno, static_cast<int>(b) + 1, "expected nine file names, got more");
+    std::istringstream words(line);
+    std::vector<std::string> names;
+    for (std::string w; words >> w && w[0] != '#';) names.push_back(f.resolve(w));  // '#': a comment to the end
+    if (!names.empty()) slots.push_back(std::move(names));  // (only other blanks: an empty line)
   }
-  if (names.size() == 8) names.insert(names.begin() + 3, "");  // the manual's constructor: no predicate actions
-  if (names.size() != 9)
+  // The manual's constructor: eight, no predicate actions.
+  if (slots.size() == kSlotCount - 1) slots.insert(slots.begin() + 3, std::vector<std::string>{""});
+  if (slots.size() != kSlotCount)
     throw ParseError(path, lineno, 0, "expected nine file names (ctof, shape_ctof, Predicate, PredicateActions, "
-                                      "Cando, behaviour list, want, s_ftoc, s_shape), got " + std::to_string(names.size()));
-  f.ctof = names[0];
-  f.shape_ctof = names[1];
-  f.predicates = names[2];
-  f.predicate_actions = names[3];
-  f.cando = names[4];
-  f.behaviors = names[5];
-  f.want = names[6];
-  f.s_ftoc = names[7];
-  f.s_shape = names[8];
+                                      "Cando, behaviour list, want, s_ftoc, s_shape), got " + std::to_string(slots.size()));
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    f.first(static_cast<Slot>(i)) = slots[i].front();
+    f.more[i].assign(slots[i].begin() + 1, slots[i].end());
+  }
   return f;
 }
 
@@ -100,26 +123,38 @@ std::string ConfigFiles::resolve(const std::string& p) const {
   return (fs::path(base_dir) / p).string();
 }
 
+namespace {
+// The definitions of every file of a slot, in order.
+template <typename T, typename F>
+std::vector<T> parse_slot(const ConfigFiles& files, Slot slot, F parse_fn) {
+  std::vector<T> out;
+  for (const std::string& file : files.all(slot)) {
+    std::vector<T> defs = parse_fn(read_text_file(file), file);
+    out.insert(out.end(), std::make_move_iterator(defs.begin()), std::make_move_iterator(defs.end()));
+  }
+  return out;
+}
+}  // namespace
+
 ParsedConfig ParsedConfig::load(const ConfigFiles& files, const std::vector<std::string>& custom_extensions) {
   ParsedConfig c;
   c.files = files;
-  c.assocs = parse_associations(read_text_file(files.ctof), files.ctof);
-  c.shapes = parse_shapes(read_text_file(files.shape_ctof), files.shape_ctof);
-  c.predicates = parse_definitions(read_text_file(files.predicates), files.predicates);
-  if (!files.predicate_actions.empty())
-    c.predicate_actions = parse_definitions(read_text_file(files.predicate_actions), files.predicate_actions);
-  c.cando = parse_definitions(read_text_file(files.cando), files.cando);
-  c.behaviors = parse_behavior_list(read_text_file(files.behaviors), files.behaviors);
-  c.want = parse_definitions(read_text_file(files.want), files.want);
-  c.out_assocs = parse_associations(read_text_file(files.s_ftoc), files.s_ftoc);
-  c.out_shapes = parse_shapes(read_text_file(files.s_shape), files.s_shape);
+  c.assocs = parse_slot<AssociationDef>(files, Slot::kCtof, parse_associations);
+  c.shapes = parse_slot<ShapeDef>(files, Slot::kShapeCtof, parse_shapes);
+  c.predicates = parse_slot<DefinitionDef>(files, Slot::kPredicates, parse_definitions);
+  c.predicate_actions = parse_slot<DefinitionDef>(files, Slot::kPredicateActions, parse_definitions);
+  c.cando = parse_slot<DefinitionDef>(files, Slot::kCando, parse_definitions);
+  c.behaviors = parse_slot<BehaviorDef>(files, Slot::kBehaviors, parse_behavior_list);
+  c.want = parse_slot<DefinitionDef>(files, Slot::kWant, parse_definitions);
+  c.out_assocs = parse_slot<AssociationDef>(files, Slot::kSFtoc, parse_associations);
+  c.out_shapes = parse_slot<ShapeDef>(files, Slot::kSShape, parse_shapes);
   for (const auto& b : c.behaviors) {
     const std::string path = files.resolve(b.path);
     std::string text;
     try {
       text = read_text_file(path);
     } catch (const ParseError&) {
-      throw ParseError(files.behaviors, b.line, b.column, "cannot open behaviour file '" + path + "'");
+      throw ParseError(b.file, b.line, b.column, "cannot open behaviour file '" + path + "'");
     }
     c.behavior_files.push_back(path);
     const std::string ext = fs::path(path).extension().string();

@@ -21,7 +21,7 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
     if (method != DefuzzMethod::kBarycenter) return;
     for (const auto& set : def.sets)
       if (set.type == "SNG" || set.type == "TOL" || set.type == "TOR")
-        throw ParseError(shapes_file, set.line, set.column,
+        throw ParseError(def.file.empty() ? shapes_file : def.file, set.line, set.column,
                          "barycenter defuzzification needs sets with an area (TRI DIV TRA REC), got " + set.type);
   });
   for (const Shape& sh : shapes_) {
@@ -31,7 +31,7 @@ Defuzzyfier::Defuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<
   for (const auto& a : assocs) {
     const int shape = shape_ids.find(a.shape);
     if (shape < 0)
-      throw ParseError(assoc_file, a.line, a.column, "unknown shape '" + a.shape + "' for action '" + a.name + "'");
+      throw ParseError(a.file.empty() ? assoc_file : a.file, a.line, a.column, "unknown shape '" + a.shape + "' for action '" + a.name + "'");
     const int id = actions_.intern(a.name);
     if (id < static_cast<int>(shape_of_.size())) {
       shape_of_[static_cast<std::size_t>(id)] = shape;

@@ -13,7 +13,7 @@ Fuzzyfier::Fuzzyfier(const std::vector<ShapeDef>& shapes, const std::vector<Asso
   for (const auto& a : assocs) {
     const int shape = shape_ids.find(a.shape);
     if (shape < 0)
-      throw ParseError(assoc_file, a.line, a.column, "unknown shape '" + a.shape + "' for '" + a.name + "'");
+      throw ParseError(a.file.empty() ? assoc_file : a.file, a.line, a.column, "unknown shape '" + a.shape + "' for '" + a.name + "'");
     const int id = data_.intern(a.name);
     if (id < static_cast<int>(shape_of_.size())) {  // re-association: last one wins
       shape_of_[static_cast<std::size_t>(id)] = shape;

@@ -65,6 +65,7 @@ std::vector<DefinitionDef> parse_definitions(const std::string& text, const std:
     const Token& name = ts.expect_word("a name at the start of a definition");
     DefinitionDef d;
     d.name = name.text;
+    d.file = file;
     d.line = name.line;
     d.column = name.column;
     ts.expect(Token::kEquals, "'=' after " + d.name);

@@ -25,13 +25,14 @@ std::vector<Shape> build_shapes(const std::vector<ShapeDef>& defs, const std::st
                                 const std::function<void(const ShapeDef&)>& check) {
   std::vector<Shape> shapes;
   for (const auto& def : defs) {
+    const std::string& where = def.file.empty() ? file : def.file;  // its own file when the slot has several
     if (ids.find(def.name) >= 0)
-      throw ParseError(file, def.line, def.column, "shape '" + def.name + "' defined twice");
+      throw ParseError(where, def.line, def.column, "shape '" + def.name + "' defined twice");
     ids.intern(def.name);
     try {
       shapes.push_back(Shape::from_def(def));
     } catch (const std::invalid_argument& e) {
-      throw ParseError(file, def.line, def.column, e.what());
+      throw ParseError(where, def.line, def.column, e.what());
     }
     if (check) check(def);
   }

@@ -25,6 +25,7 @@ std::vector<ShapeDef> parse_shapes(const std::string& text, const std::string& f
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
     ShapeDef shape = ts.open<ShapeDef>("'(' opening a shape");
     shape.name = ts.expect_word("a shape name").text;
+    shape.file = file;
     while (ts.peek().kind == Token::kOpen) {
       ts.next();
       SetDef set;
@@ -62,6 +63,7 @@ std::vector<AssociationDef> parse_associations(const std::string& text, const st
     if (ts.peek().kind == Token::kSemicolon) { ts.next(); continue; }
     AssociationDef a = ts.open<AssociationDef>("'(' opening an association");
     a.name = ts.expect_word("a datum or action name").text;
+    a.file = file;
     a.shape = ts.expect_word("a shape name").text;
     ts.expect(Token::kClose, "')' closing the association of " + a.name);
     out.push_back(std::move(a));

@@ -1,6 +1,8 @@
 // What the Mr. BRIAN file parsers produce: the files' content with names
-// still unresolved and the line of every element, so that the model builder
-// and the checker can both work on it.
+// still unresolved and the file and line of every element, so that the model
+// builder and the checker can both work on it. A BrianConfigs.ini slot may
+// name several files (their definitions concatenated): every top-level
+// definition keeps the file it came from, so that each message names it.
 #pragma once
 
 #include <string>
@@ -23,12 +25,14 @@ struct ShapeDef {
   std::vector<SetDef> sets;
   bool circular = false;
   double range_lo = 0.0, range_hi = 0.0;
+  std::string file;  // the file it was read from (its sets' file too)
   int line = 0, column = 0;
 };
 
 /// `(name SHAPE)` of ctof.txt / s_ftoc.txt.
 struct AssociationDef {
   std::string name, shape;
+  std::string file;
   int line = 0, column = 0;
 };
 
@@ -48,6 +52,7 @@ struct ExprAst {
 struct DefinitionDef {
   std::string name;
   ExprAst expr;
+  std::string file;  // its expressions' file too
   int line = 0, column = 0;
 };
 
@@ -70,6 +75,7 @@ struct RuleDef {
 struct BehaviorDef {
   int level = 0;
   std::string name, path;
+  std::string file;  // the behaviour list it was read from
   int line = 0, column = 0;
 };
 

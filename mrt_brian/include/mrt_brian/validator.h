@@ -16,8 +16,10 @@ namespace mrt::brian {
 struct Diagnostic {
   /// kUnknownName: a name that resolves to nothing (the manual profile
   /// refuses to load, the legacy profile reads it as 0 and warns);
-  /// kWarning: legal but almost certainly not what was meant.
-  enum Kind { kError, kUnknownName, kWarning };
+  /// kWarning: legal but almost certainly not what was meant;
+  /// kDuplicate: a name defined in two files of one slot (a BrianConfigs.ini
+  /// line naming several files), both places named; both profiles refuse it.
+  enum Kind { kError, kUnknownName, kWarning, kDuplicate };
   std::string file;
   int line = 0;
   std::string message;

@@ -5,7 +5,9 @@
 // hand-back), supplies the facts its task machines read (world_crisp: MAP's
 // crisp data and TourFacts), asks SPIKE's spike_node for each leg when the
 // Replan task starts, and gives Mr. BRIAN the path point of the active task
-// (goal_crisp, Roby's data: Status, HaveGoal, GoalDistance, GoalBearing).
+// (goal_crisp, Roby's data: Status, HaveGoal, GoalDistance, GoalBearing)
+// and the visitor's place for the KeepVisitor rules (VisitorDistance,
+// VisitorAngle; config/brian/README.md), which keep the visitor.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/GetPlan.h>
 #include <nav_msgs/Odometry.h>
@@ -15,6 +17,7 @@
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <map>
@@ -179,8 +182,10 @@ class GuideNode {
     std::map<std::string, const mrt_msgs::CrispData*> by;
     for (const auto& d : m.data) by[d.name] = &d;
     visitor_.reset();
-    if (by.count("VisitorX") && by.count("VisitorY") && by["VisitorX"]->reliability > 0.05)
+    if (by.count("VisitorX") && by.count("VisitorY") && by["VisitorX"]->reliability > 0.05) {
       visitor_ = Point2D{by["VisitorX"]->value, by["VisitorY"]->value};
+      visitor_reliability_ = std::min(by["VisitorX"]->reliability, by["VisitorY"]->reliability);
+    }
     // Its speed: the track's displacement over the last second (MAP's
     // filtered velocity jitters by 0.1-0.2 m/s around a standing person).
     const double t = m.header.stamp.isZero() ? ros::Time::now().toSec() : m.header.stamp.toSec();
@@ -278,7 +283,7 @@ class GuideNode {
   std::optional<Point2D> goal(const TourFacts& f) {
     if (!pose_) return std::nullopt;
     const Pose2D& p = *pose_;
-    if (task_ == "Guide" && !plan_.empty() && !f.lagging) {
+    if (task_ == "Guide" && !plan_.empty()) {  // a lagging visitor: KeepVisitor's rules
       while (index_ + 1 < plan_.size() &&
              std::hypot(plan_[index_].x - p.x, plan_[index_].y - p.y) < cfg_.guide.lookahead)
         ++index_;
@@ -331,6 +336,10 @@ class GuideNode {
     }
     add(g, "RemoteSpeed", 0);
     add(g, "RemoteTurn", 0);
+    if (f.visitor_seen) {  // MAP's track, with MAP's reliability; none: KeepVisitor stays out
+      add(g, "VisitorDistance", f.visitor_distance * 100.0, visitor_reliability_);
+      add(g, "VisitorAngle", f.visitor_bearing * 180.0 / M_PI, visitor_reliability_);
+    }
     goal_pub_.publish(g);
 
     std_msgs::String st;
@@ -392,7 +401,7 @@ class GuideNode {
   int job_delay_ = 0;
   std::optional<Pose2D> pose_;
   std::optional<Point2D> visitor_;
-  double visitor_speed_ = 0.0;
+  double visitor_speed_ = 0.0, visitor_reliability_ = 1.0;
   std::deque<std::pair<double, Point2D>> track_;
   mrt_msgs::CrispDataArray map_crisp_;
   ros::Time started_, replan_at_;
