@@ -12,7 +12,11 @@ grouped by node name across the robots' namespaces, and the real-time
 factor the machine could hold if it were idle:
     RTF achievable = cores / total CPU seconds per simulated second.
 Unlike the wall-clock real-time factor (rtf_monitor.py) this does not depend
-on what else runs on the machine.
+on what else runs on the machine, for the nodes whose work follows simulated
+time; a node working on wall-clock timers (DCDT's Agoras, the AIRBoard's
+serial link) costs CPU per wall second instead, which the second column
+shows: run twice at two real-time factors (sim_node ~real_time_factor) to
+tell the two apart.
 """
 import argparse
 import os
@@ -98,10 +102,11 @@ def main():
         per_kind[kind] = per_kind.get(kind, 0.0) + rate
     total = sum(per_node.values())
     print("cpu_profile: %.1f sim s over %.1f wall s (wall RTF %.2f, machine shared)" % (sim, w1 - w0, sim / (w1 - w0)))
-    print("%-40s %s" % ("node (summed over robots)", "CPU s per sim s"))
+    rtf = sim / (w1 - w0)
+    print("%-40s %s" % ("node (summed over robots)", "CPU s per sim s  (per wall s)"))
     for k, v in sorted(per_kind.items(), key=lambda kv: -kv[1]):
-        print("%-40s %.3f" % (k, v))
-    print("%-40s %.3f" % ("total", total))
+        print("%-40s %.3f  (%.3f)" % (k, v, v * rtf))
+    print("%-40s %.3f  (%.3f)" % ("total", total, total * rtf))
     print("RTF achievable on %g idle cores: %.2f" % (a.cores, a.cores / total if total > 0 else float("inf")))
     return 0
 
