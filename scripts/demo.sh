@@ -129,7 +129,12 @@ if [ "$NAME" = robocup ]; then
   # ball errors from ground truth; the real-time factor the team held
   /usr/bin/python3 "$ROOT/mrt_robocup/scripts/robocup_summary.py" "$OUT/demo.bag" ||
     echo "robocup: no summary (see $OUT/roslaunch.log)"
-  grep -h "real-time factor:" "$OUT/roslaunch.log" | tail -n 1 | sed 's/^.*real-time factor/robocup: real-time factor/' || true
+  # rtf_monitor's last line, without the console's colour codes: printed
+  # again as the demo's last line.
+  rtf_line=$(grep -h "real-time factor:" "$OUT/roslaunch.log" | tail -n 1 |
+    sed -e 's/\x1b\[[0-9;]*m//g' -e 's/^.*real-time factor/real-time factor/' || true)
+  rtf_line="robocup: ${rtf_line:-real-time factor: none printed (see $OUT/roslaunch.log)}"
+  echo "$rtf_line"
 fi
 
 # The plots of the run, over the launch file's world (its `world` argument).
@@ -141,3 +146,4 @@ world_args=()
 echo "demo: screenshot $OUT/rviz.png ($colours colours)"
 echo "demo: bag        $OUT/demo.bag"
 echo "demo: done in ${SECONDS} s"
+if [ "$NAME" = robocup ]; then echo "$rtf_line"; fi

@@ -235,7 +235,13 @@ class AirboardNode : public SessionListener {
     rc::set_planar_covariance(pose_cov, od.pose.covariance, 1e6);
     rc::set_planar_covariance(twist_cov, od.twist.covariance, 1e6);
     odom_pub_.publish(od);
-    if (o_.publish_tf) tf_.sendTransform(rc::to_transform(odom.pose(), o_.odom_frame, o_.base_frame, stamp));
+    // Two board states can arrive within one tick of simulated time (the
+    // four-wheel base's longer frames): tf refuses a repeated stamp
+    // (TF_REPEATED_DATA), so the transform goes out once per stamp.
+    if (o_.publish_tf && stamp != last_tf_stamp_) {
+      tf_.sendTransform(rc::to_transform(odom.pose(), o_.odom_frame, o_.base_frame, stamp));
+      last_tf_stamp_ = stamp;
+    }
   }
 
   void publish_status(const ros::Time& stamp, const BoardState* s) {
@@ -346,6 +352,7 @@ class AirboardNode : public SessionListener {
   ros::Timer control_timer_, read_timer_, diag_timer_;
   diagnostic_updater::Updater diag_;
   tf2_ros::TransformBroadcaster tf_;
+  ros::Time last_tf_stamp_;  // of the last odom -> base_link sent
 };
 
 }  // namespace mrt::airboard

@@ -1,6 +1,10 @@
-// recvision_bench [--frames N] [--calib FILE] [--world FILE]
+// recvision_bench [--frames N] [--calib FILE] [--world FILE] [--scale S]
 // Frames rendered by mrt_sim's camera (CameraRenderer) on the MSL field,
 // with the robot, the ball, the opponent and two team-mates moving.
+// With --scale S (default 1) the camera renders images scaled by S
+// (mrt_sim's scale_camera) and RecVision runs on the scaled calibration
+// (scale_calibration): the figures of the bringup's ~camera_scale.
+// 0. CPU time per frame of mrt_sim's rendering (median, first 200 frames).
 // 1. CPU time per 640x480 frame on one core (median over the first 200
 //    frames; the wall-clock median too) of
 //    RecVision's processing, and of a straightforward pipeline on the same
@@ -150,6 +154,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "rendered frames per condition")->check(CLI::PositiveNumber);
   app.add_option("--calib", calib, "calibration file")->check(CLI::ExistingFile);
   app.add_option("--world", world, "mrt_sim world file (MSL field)");
+  double scale = 1.0;
+  app.add_option("--scale", scale, "image scale of the camera and the calibration (0.5: half size)")
+      ->check(CLI::Range(0.05, 4.0));
   if (const int code = mrt::cli::parse_cli(app, argc, argv); code >= 0) return code;
   if (world.empty()) {
     std::fprintf(stderr, "recvision_bench: give --world (mrt_sim's worlds/msl_field.yaml)\n");
@@ -158,17 +165,18 @@ int main(int argc, char** argv) {
   sim::World w = sim::load_world(world);
   const sim::RobotConfig rc = w.robots.at(0);
   w.robots.clear();  // the robot is driven here, not simulated
-  const Calibration cal = load_calibration(calib);
+  const Calibration cal = scale_calibration(load_calibration(calib), scale);
+  const mrt::common::OmniCamera cam = sim::scale_camera(rc.sensors.camera.model, scale);
   Detector det(cal);
   det.set_mount(rc.sensors.camera.mount_x, rc.sensors.camera.mount_y, 0.0);
   const Condition conds[4] = {{"", 1.0, -1}, {"_dim70", 0.7, -1}, {"_bright130", 1.3, -1}, {"_varying30", 1.0, 0.3}};
   sim::CameraOptions nominal = sim::camera_options(rc, 1), varying = nominal;
   varying.effects.illumination = 0.3;
-  sim::CameraRenderer r_nom(w, rc.sensors.camera.model, nominal), r_var(w, rc.sensors.camera.model, varying);
+  sim::CameraRenderer r_nom(w, cam, nominal), r_var(w, cam, varying);
   sim::SensorsConfig vis = rc.sensors;
   vis.vision_range = 6.0;
   Tally acc[4];
-  std::vector<double> t_rv, t_base, w_rv;
+  std::vector<double> t_rv, t_base, w_rv, t_render;
   cv::setNumThreads(1);  // one core, for both pipelines
   cv::Mat rgb, lit, hsv, mask;
   mrt::cli::Progress progress("recvision_bench", frames);
@@ -180,7 +188,9 @@ int main(int argc, char** argv) {
       visible = visible || (s.membership_class == "Ball" && s.distance >= 0.5);
     const double truth = std::hypot(w.ball.position.x - st.robot.x, w.ball.position.y - st.robot.y);
     for (int k = 0; k < 4; ++k) {
+      const double r0 = cpu_ms();
       (conds[k].spatial > 0 ? r_var : r_nom).render(st.robot, st.others, i / 30.0, rgb, st.twist);
+      if (k == 0 && i < 200) t_render.push_back(cpu_ms() - r0);
       if (conds[k].gain != 1.0) rgb.convertTo(rgb, CV_8UC3, conds[k].gain);
       Frame f;
       f.rgb = rgb;
@@ -201,6 +211,8 @@ int main(int argc, char** argv) {
   }
   progress.finish();
   const double m_rv = median(t_rv), m_base = median(t_base);
+  std::printf("scale: %.3g (%dx%d)\n", scale, cam.width, cam.height_px);
+  std::printf("render_median: %.3f ms\n", median(t_render));
   std::printf("frame_median: %.3f ms\n", m_rv);
   std::printf("frame_median_wall: %.3f ms\n", median(w_rv));
   std::printf("hsv_contours_frame_median: %.3f ms\n", m_base);

@@ -132,7 +132,12 @@ class RecVisionNode {
     params.get("frame_prefix", prefix).get("robot", robot_).get("use_tf", use_tf_).get("debug_image", debug_);
     base_frame_ = prefix + "base_link";
     params.get("base_frame", base_frame_);
-    detector_ = std::make_unique<Detector>(load_calibration(calib_file));  // ParseError -> run_node exits 1
+    // ~scale: the images are the calibrated camera's scaled by this factor
+    // (mrt_sim's ~camera_scale): one calibration file, scaled in code.
+    double scale = 1.0;
+    params.get_positive("scale", scale);
+    mrt::ros_common::ParamReader::check(scale <= 4.0, "scale", "a number in (0, 4]");
+    detector_ = std::make_unique<Detector>(scale_calibration(load_calibration(calib_file), scale));  // ParseError -> run_node exits 1
     percepts_pub_ = nh.advertise<mrt_msgs::Percept>("percepts", 10);
     if (debug_) debug_pub_ = it_.advertise("camera/debug_image", 1);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("vision_markers", 2);
@@ -158,6 +163,15 @@ class RecVisionNode {
   void on_image(const sensor_msgs::ImageConstPtr& msg) {
     Frame f;
     std::string why;
+    if (msg->encoding == "rgb8" && msg->width > 0 && msg->step == msg->width * 3 &&
+        msg->data.size() >= std::size_t(msg->step) * msg->height) {
+      // The common case (mrt_sim's camera): process the message's buffer in
+      // place, read only, instead of copying every frame.
+      f.rgb = cv::Mat(int(msg->height), int(msg->width), CV_8UC3, const_cast<std::uint8_t*>(msg->data.data()));
+      f.stamp = msg->header.stamp.toSec();
+      process(f, msg->header);
+      return;
+    }
     if (!frame_from_raw(msg->encoding, int(msg->width), int(msg->height), msg->step, msg->data.data(),
                         msg->data.size(), msg->header.stamp.toSec(), f, why)) {
       ++dropped_encoding_;

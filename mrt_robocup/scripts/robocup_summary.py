@@ -150,6 +150,8 @@ def main(path):
     minutes = end / 60.0 if end > 0 else float("nan")
     print(f"robocup: role changes: {job_changes} ({job_changes / minutes:.1f} per minute, team total)")
     for r in robots:
+        if r.startswith("opp_"):
+            continue  # the scripted opponents: no MUREA
         errors = []
         for t, x, y in est.get(r, []):
             s = truth[r].at(t)

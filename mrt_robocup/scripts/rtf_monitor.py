@@ -4,8 +4,8 @@
 Subscribes /clock and, every ~period wall seconds, prints (ROS_INFO) and
 publishes on `rtf` (std_msgs/Float64) the simulated seconds that passed
 divided by the wall seconds: what the whole team achieves, whatever the
-simulator was asked for. ~camera_rate and ~vision are printed with it, so a
-log says under which settings the factor was measured.
+simulator was asked for. ~camera_rate, ~camera_scale and ~vision are
+printed with it, so a log says under which settings the factor was measured.
 """
 import threading
 import time
@@ -20,8 +20,9 @@ class RtfMonitor:
         self.period = float(rospy.get_param("~period", 10.0))
         if not self.period > 0.0:
             raise ValueError("~period: expected a number > 0, got %r" % self.period)
-        self.settings = "camera %s Hz, vision %s" % (rospy.get_param("~camera_rate", "?"),
-                                                     rospy.get_param("~vision", "?"))
+        self.settings = "camera %s Hz at scale %s, vision %s" % (rospy.get_param("~camera_rate", "?"),
+                                                                 rospy.get_param("~camera_scale", "?"),
+                                                                 rospy.get_param("~vision", "?"))
         self.lock = threading.Lock()
         self.sim = None
         self.pub = rospy.Publisher("rtf", Float64, queue_size=1, latch=True)

@@ -33,7 +33,7 @@ endif()
 # The bringup's launch files, rviz config and helper scripts (the launch
 # files use $(find mrt_robocup)/launch, the rostests and the demo the scripts).
 install(DIRECTORY launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
-catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py
+catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py scripts/cpu_profile.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # The bringup's small nodes (robot.launch, robocup.launch): MUREA's pose as

@@ -3,7 +3,9 @@
 // occlusion, the own body, line widths and the image effects.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "mrt_sim/camera.h"
 
@@ -232,4 +234,47 @@ TEST(Camera, BlurAtSpeedSmearsAlongTheMotion) {
   EXPECT_NE(s0, m0);
   EXPECT_EQ(ground_pixel(still, cam, 1.5, 1.5), ground_pixel(moving, cam, 1.5, 1.5));
   EXPECT_EQ(ground_pixel(moving, cam, 1.5, 1.5), cv::Vec3b(255, 255, 255));
+}
+
+// sim_node's ~camera_scale: the same camera rendering half-size images.
+// The ball 1 m ahead (centre 0.49 m below the viewpoint, 1.1136 m away,
+// angular radius asin(0.11 / 1.1136) = 0.0989 rad at theta0 = atan(1 /
+// 0.49) = 1.1156 rad) is, in the isometric part (r = 0.6 tan(theta) / 0.02
+// full size), a perspective ellipse from r = 30 tan(1.0166) = 48.43 to
+// 30 tan(1.2145) = 80.51 px: centred at 64.47 px full size, 32.24 px at
+// half size. The half image's centre is (320 + 0.5) / 2 - 0.5 = 159.75, so
+// the blob's centroid is at u = 159.75, v = 119.75 - 32.24 = 87.51, within
+// half a pixel (one full-size pixel: the blob's digitisation), and at the
+// full image's centroid scaled the same way within half a pixel.
+TEST(Camera, HalfScaleRendersTheBallAtTheScaledPixel) {
+  World w = empty_world();
+  w.ball.enabled = true;
+  w.ball.position = {1.0, 0.0};
+  const OmniCamera half = scale_camera(test_camera(), 0.5);
+  EXPECT_EQ(half.width, 320);
+  EXPECT_EQ(half.height_px, 240);
+  EXPECT_DOUBLE_EQ(half.cx, 159.75);
+  EXPECT_DOUBLE_EQ(half.cy, 119.75);
+  auto centroid = [&](const OmniCamera& cam, double& out_u, double& out_v) {
+    CameraRenderer r(w, cam);
+    cv::Mat img;
+    r.render(Pose2D(0, 0, 0), {}, 0.0, img);
+    EXPECT_EQ(img.cols, cam.width);
+    double su = 0, sv = 0;
+    int n = 0;
+    for (int v = 0; v < img.rows; ++v)
+      for (int u = 0; u < img.cols; ++u)
+        if (is_orange(img.at<cv::Vec3b>(v, u))) su += u, sv += v, ++n;
+    EXPECT_GT(n, 10);
+    out_u = su / std::max(n, 1), out_v = sv / std::max(n, 1);
+  };
+  double hu = 0, hv = 0, fu = 0, fv = 0;
+  centroid(half, hu, hv);
+  centroid(test_camera(), fu, fv);
+  EXPECT_NEAR(hu, 159.75, 0.5);
+  EXPECT_NEAR(hv, 87.51, 0.5);
+  EXPECT_NEAR(fv, 240.0 - 64.47, 1.0);
+  EXPECT_NEAR(hu, (fu + 0.5) * 0.5 - 0.5, 0.5);
+  EXPECT_NEAR(hv, (fv + 0.5) * 0.5 - 0.5, 0.5);
+  EXPECT_THROW(scale_camera(test_camera(), 0.0), std::invalid_argument);
 }

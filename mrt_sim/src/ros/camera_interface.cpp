@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include <cv_bridge/cv_bridge.h>
+#include <boost/make_shared.hpp>
 #include <sensor_msgs/image_encodings.h>
 
 namespace mrt::sim::node {
@@ -35,17 +35,28 @@ CameraInterface::CameraInterface(ros::NodeHandle& rnh, const Simulator& sim, std
 
 void CameraInterface::publish(const ros::Time& stamp) {
   const RobotState& r = sim_.robots()[index_];
-  if (!r.camera_ready || (image_pub_.getNumSubscribers() == 0 && info_pub_.getNumSubscribers() == 0)) return;
+  if (!r.camera_ready) return;
+  // camera_info is cheap: it goes out whenever a frame is due; the image
+  // is rendered only while someone subscribes to it.
+  if (info_pub_.getNumSubscribers() > 0) info_pub_.publish(to_camera_info(renderer_.camera(), frame_, stamp));
+  if (image_pub_.getNumSubscribers() == 0) return;
+  // Render straight into the message's buffer (no copy through cv_bridge).
+  const mrt::common::OmniCamera& cam = renderer_.camera();
+  sensor_msgs::ImagePtr msg = boost::make_shared<sensor_msgs::Image>();
+  msg->header.stamp = stamp;
+  msg->header.frame_id = frame_;
+  msg->encoding = sensor_msgs::image_encodings::RGB8;
+  msg->width = static_cast<std::uint32_t>(cam.width);
+  msg->height = static_cast<std::uint32_t>(cam.height_px);
+  msg->step = msg->width * 3;
+  msg->data.resize(std::size_t(msg->step) * msg->height);
+  cv::Mat image(cam.height_px, cam.width, CV_8UC3, msg->data.data());
   const auto t0 = std::chrono::steady_clock::now();
-  renderer_.render(r.pose, sim_.other_robots(index_), sim_.time(), image_, r.twist);
+  renderer_.render(r.pose, sim_.other_robots(index_), sim_.time(), image, r.twist);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   render_ms_ = frames_ == 0 ? ms : 0.9 * render_ms_ + 0.1 * ms;
   ++frames_;
-  std_msgs::Header h;
-  h.stamp = stamp;
-  h.frame_id = frame_;
-  image_pub_.publish(cv_bridge::CvImage(h, sensor_msgs::image_encodings::RGB8, image_).toImageMsg());
-  info_pub_.publish(to_camera_info(renderer_.camera(), frame_, stamp));
+  image_pub_.publish(msg);
 }
 
 geometry_msgs::TransformStamped CameraInterface::mount_transform(const std::string& parent) const {

@@ -30,8 +30,9 @@ class CameraInterface {
   /// `rnh` is the robot's namespace; `frame_prefix` "<prefix><robot>/".
   CameraInterface(ros::NodeHandle& rnh, const Simulator& sim, std::size_t index, const std::string& frame_prefix);
 
-  /// After a step: renders and publishes a frame when one is due and
-  /// someone listens.
+  /// After a step, when a frame is due: publishes camera_info if someone
+  /// listens to it, renders and publishes the image if someone listens to
+  /// that (nothing is rendered for camera_info alone).
   void publish(const ros::Time& stamp);
 
   /// <sensor_parent> -> <robot>/omni_mirror at the viewpoint mount.
@@ -49,7 +50,6 @@ class CameraInterface {
   image_transport::ImageTransport it_;
   image_transport::Publisher image_pub_;
   ros::Publisher info_pub_;
-  cv::Mat image_;
   std::uint64_t frames_ = 0;
   double render_ms_ = 0.0;  // exponential average of the render time
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "mrt_common_ros/params.h"
+#include "mrt_sim/camera.h"
 
 namespace mrt::sim::node {
 namespace {
@@ -57,7 +58,9 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get("description_robots", o.description_robots)
       .get("robots", o.robots)
       .get_non_negative("camera_rate", o.camera_rate)
+      .get_positive("camera_scale", o.camera_scale)
       .get("seed", o.seed);
+  ParamReader::check(o.camera_scale <= 4.0, "camera_scale", "a number in (0, 4]");
   ParamReader::check(o.seed >= -1, "seed", "an integer >= 0, or -1 for the world file's");
   ParamReader::check(!o.world_frame.empty() && valid_frame_name(o.world_frame), "world_frame",
                      "a non-empty frame name of [A-Za-z0-9_/]");
@@ -83,6 +86,9 @@ void apply_team_options(const NodeOptions& o, World& world) {
   if (o.camera_rate > 0.0)
     for (RobotConfig& r : world.robots)
       if (r.sensors.camera.rate > 0.0) r.sensors.camera.rate = o.camera_rate;
+  if (o.camera_scale != 1.0)
+    for (RobotConfig& r : world.robots)
+      if (r.sensors.camera.rate > 0.0) r.sensors.camera.model = scale_camera(r.sensors.camera.model, o.camera_scale);
   if (o.seed >= 0) world.seed = static_cast<std::uint64_t>(o.seed);
 }
 

@@ -31,6 +31,7 @@ struct NodeOptions {
   std::vector<std::string> description_robots;   // ~description_robots: sensor frames from robot_description
   std::vector<std::string> robots;     // ~robots: the world's robots to simulate (empty = all); a team's size
   double camera_rate = 0.0;            // ~camera_rate: Hz of every robot's camera (0 = the world file's)
+  double camera_scale = 1.0;           // ~camera_scale: every robot's camera renders images scaled by this
   int seed = -1;                       // ~seed: the world's noise seed (-1 = the world file's)
 
   double dt() const { return 1.0 / rate_hz; }
@@ -45,10 +46,12 @@ struct NodeOptions {
 /// one ("~rate_hz: expected a finite number > 0").
 NodeOptions load_node_options(const ros::NodeHandle& pnh);
 
-/// Applies ~robots, ~camera_rate and ~seed to a loaded world: keeps only the robots
-/// named (in the world's order; throws std::invalid_argument naming the
-/// parameter for a name the world does not have) and sets the rate of every
-/// camera the world gives; a ~seed >= 0 replaces the world's seed.
+/// Applies ~robots, ~camera_rate, ~camera_scale and ~seed to a loaded world:
+/// keeps only the robots named (in the world's order; throws
+/// std::invalid_argument naming the parameter for a name the world does not
+/// have), sets the rate of every camera the world gives and scales its
+/// image (scale_camera in mrt_sim/camera.h); a ~seed >= 0 replaces the
+/// world's seed.
 void apply_team_options(const NodeOptions& o, World& world);
 
 }  // namespace mrt::sim::node
