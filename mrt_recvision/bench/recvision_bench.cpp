@@ -2,7 +2,7 @@
 // Frames rendered by mrt_sim's camera (CameraRenderer) on the MSL field,
 // with the robot, the ball, the opponent and two team-mates moving.
 // With --scale S (default 1) the camera renders images scaled by S
-// (mrt_sim's scale_camera) and RecVision runs on the scaled calibration
+// (OmniCamera::scaled) and RecVision runs on the scaled calibration
 // (scale_calibration): the figures of the bringup's ~camera_scale.
 // 0. CPU time per frame of mrt_sim's rendering (median, first 200 frames).
 // 1. CPU time per 640x480 frame on one core (median over the first 200
@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
   const sim::RobotConfig rc = w.robots.at(0);
   w.robots.clear();  // the robot is driven here, not simulated
   const Calibration cal = scale_calibration(load_calibration(calib), scale);
-  const mrt::common::OmniCamera cam = sim::scale_camera(rc.sensors.camera.model, scale);
+  const mrt::common::OmniCamera cam = rc.sensors.camera.model.scaled(scale);
   Detector det(cal);
   det.set_mount(rc.sensors.camera.mount_x, rc.sensors.camera.mount_y, 0.0);
   const Condition conds[4] = {{"", 1.0, -1}, {"_dim70", 0.7, -1}, {"_bright130", 1.3, -1}, {"_varying30", 1.0, 0.3}};

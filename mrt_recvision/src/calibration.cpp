@@ -177,26 +177,10 @@ Calibration parse_calibration(const std::string& yaml_text, const std::string& f
   return cal;
 }
 
-mrt::common::OmniCamera scale_camera(const mrt::common::OmniCamera& cam, double scale) {
-  if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("camera scale: expected a number > 0");
-  mrt::common::OmniCamera out = cam;
-  out.width = static_cast<int>(std::lround(cam.width * scale));
-  out.height_px = static_cast<int>(std::lround(cam.height_px * scale));
-  if (out.width < 4 || out.height_px < 4 || out.width * out.height_px < 16)
-    throw std::invalid_argument("camera scale: " + std::to_string(scale) + " leaves an image of " +
-                                std::to_string(out.width) + "x" + std::to_string(out.height_px) + " pixels");
-  out.cx = (cam.cx + 0.5) * scale - 0.5;
-  out.cy = (cam.cy + 0.5) * scale - 0.5;
-  std::vector<std::pair<double, double>> table = cam.profile.table();
-  for (auto& s : table) s.second *= scale;
-  out.profile = mrt::common::MirrorProfile(std::move(table));
-  return out;
-}
-
 Calibration scale_calibration(const Calibration& cal, double scale) {
   if (scale == 1.0) return cal;
   Calibration out = cal;
-  out.camera = scale_camera(cal.camera, scale);
+  out.camera = cal.camera.scaled(scale);
   auto scaled = [&](int px, double factor, int at_least) {
     return std::max(at_least, static_cast<int>(std::lround(px * factor)));
   };

@@ -1,5 +1,5 @@
 // The camera scale (recvision_node's ~scale, mrt_sim's ~camera_scale): one
-// calibration file, scaled in code (scale_camera, scale_calibration), must
+// calibration file, scaled in code (OmniCamera::scaled, scale_calibration), must
 // find on a half-size image what the full calibration finds on the full one.
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ Frame frame_of(const cv::Mat& rgb) {
 
 TEST(ScaleCamera, SizeCentreAndRadiiScale) {
   const Calibration c = cal();
-  const auto half = scale_camera(c.camera, 0.5);
+  const auto half = c.camera.scaled(0.5);
   EXPECT_EQ(half.width, 320);
   EXPECT_EQ(half.height_px, 240);
   // Pixel centres at integer coordinates (OpenCV): the full image's point
@@ -46,9 +46,9 @@ TEST(ScaleCamera, SizeCentreAndRadiiScale) {
   // (0.8 + 0.540302) = 125.56 px full size, 62.78 px at half size.
   EXPECT_NEAR(c.camera.profile.radius(1.0), 125.56, 0.05);
   EXPECT_NEAR(half.profile.radius(1.0), 62.78, 0.03);
-  EXPECT_THROW(scale_camera(c.camera, 0.0), std::invalid_argument);
-  EXPECT_THROW(scale_camera(c.camera, -1.0), std::invalid_argument);
-  EXPECT_THROW(scale_camera(c.camera, 0.001), std::invalid_argument);  // 1 x 0 pixels
+  EXPECT_THROW(c.camera.scaled(0.0), std::invalid_argument);
+  EXPECT_THROW(c.camera.scaled(-1.0), std::invalid_argument);
+  EXPECT_THROW(c.camera.scaled(0.001), std::invalid_argument);  // 1 x 0 pixels
 }
 
 TEST(ScaleCalibration, PixelThresholdsScaleWithTheImage) {

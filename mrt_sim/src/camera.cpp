@@ -119,22 +119,6 @@ cv::Vec3b color_rgb(const std::string& name, cv::Vec3b fallback) {
   return it == kColors.end() ? fallback : it->second;
 }
 
-mrt::common::OmniCamera scale_camera(const mrt::common::OmniCamera& cam, double scale) {
-  if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("camera scale: expected a number > 0");
-  mrt::common::OmniCamera out = cam;
-  out.width = static_cast<int>(std::lround(cam.width * scale));
-  out.height_px = static_cast<int>(std::lround(cam.height_px * scale));
-  if (out.width < 4 || out.height_px < 4 || out.width * out.height_px < 16)
-    throw std::invalid_argument("camera scale: " + std::to_string(scale) + " leaves an image of " +
-                                std::to_string(out.width) + "x" + std::to_string(out.height_px) + " pixels");
-  out.cx = (cam.cx + 0.5) * scale - 0.5;
-  out.cy = (cam.cy + 0.5) * scale - 0.5;
-  std::vector<std::pair<double, double>> table = cam.profile.table();
-  for (auto& s : table) s.second *= scale;
-  out.profile = mrt::common::MirrorProfile(std::move(table));
-  return out;
-}
-
 CameraOptions camera_options(const RobotConfig& robot, std::uint64_t seed) {
   CameraOptions o;
   o.mount_x = robot.sensors.camera.mount_x;

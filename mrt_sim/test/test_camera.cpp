@@ -250,7 +250,7 @@ TEST(Camera, HalfScaleRendersTheBallAtTheScaledPixel) {
   World w = empty_world();
   w.ball.enabled = true;
   w.ball.position = {1.0, 0.0};
-  const OmniCamera half = scale_camera(test_camera(), 0.5);
+  const OmniCamera half = test_camera().scaled(0.5);
   EXPECT_EQ(half.width, 320);
   EXPECT_EQ(half.height_px, 240);
   EXPECT_DOUBLE_EQ(half.cx, 159.75);
@@ -276,5 +276,5 @@ TEST(Camera, HalfScaleRendersTheBallAtTheScaledPixel) {
   EXPECT_NEAR(fv, 240.0 - 64.47, 1.0);
   EXPECT_NEAR(hu, (fu + 0.5) * 0.5 - 0.5, 0.5);
   EXPECT_NEAR(hv, (fv + 0.5) * 0.5 - 0.5, 0.5);
-  EXPECT_THROW(scale_camera(test_camera(), 0.0), std::invalid_argument);
+  EXPECT_THROW(test_camera().scaled(0.0), std::invalid_argument);
 }

@@ -138,6 +138,29 @@ struct OmniCamera {
         .toRotationMatrix();
   }
 
+  /// The same camera for images scaled by `scale` (> 0; mrt_sim's
+  /// ~camera_scale, mrt_recvision's ~scale): size rounded to whole pixels,
+  /// the mirror centre with OpenCV's pixel-centre convention
+  /// (c' = (c + 0.5) s - 0.5, what cv::resize does to a point), every
+  /// radius of the mirror profile times s; viewpoint height and tilt
+  /// unchanged. Throws std::invalid_argument for scale <= 0 or an image
+  /// under 16 pixels.
+  OmniCamera scaled(double scale) const {
+    if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("camera scale: expected a number > 0");
+    OmniCamera out = *this;
+    out.width = static_cast<int>(std::lround(width * scale));
+    out.height_px = static_cast<int>(std::lround(height_px * scale));
+    if (out.width < 4 || out.height_px < 4 || out.width * out.height_px < 16)
+      throw std::invalid_argument("camera scale: " + std::to_string(scale) + " leaves an image of " +
+                                  std::to_string(out.width) + "x" + std::to_string(out.height_px) + " pixels");
+    out.cx = (cx + 0.5) * scale - 0.5;
+    out.cy = (cy + 0.5) * scale - 0.5;
+    std::vector<std::pair<double, double>> table = profile.table();
+    for (auto& s : table) s.second *= scale;
+    out.profile = MirrorProfile(std::move(table));
+    return out;
+  }
+
   /// Pixel of a 3-D point given in the viewpoint frame; false if the point
   /// is outside the mirror's field of view or the image.
   bool project(const Eigen::Vector3d& p, double& u, double& v) const {

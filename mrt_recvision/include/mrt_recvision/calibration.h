@@ -80,16 +80,8 @@ struct Calibration {
 
 Calibration load_calibration(const std::string& path);
 
-/// The same camera seen in images scaled by `scale` (> 0; 0.5 = half the
-/// width and height): size rounded to whole pixels, the mirror centre with
-/// OpenCV's pixel-centre convention (c' = (c + 0.5) s - 0.5, what
-/// cv::resize does to a point), every radius of the mirror profile times s.
-/// Viewpoint height and tilt are unchanged. Throws std::invalid_argument
-/// for scale <= 0 or an image smaller than 16 pixels.
-mrt::common::OmniCamera scale_camera(const mrt::common::OmniCamera& cam, double scale);
-
 /// The calibration for images scaled by `scale` (the node's ~scale): the
-/// camera as scale_camera, and the detector's thresholds in pixels scaled
+/// camera as OmniCamera::scaled, and the detector's thresholds in pixels scaled
 /// with the image: areas (min_ball_pixels) by s^2, counts along scan lines
 /// (min_goal_pixels, min_robot_pixels, line_gap, objects.min_pixels) by s,
 /// each rounded and at least 1 (line_gap at least 0). Distances in metres

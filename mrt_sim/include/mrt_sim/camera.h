@@ -63,14 +63,6 @@ struct CameraOptions {
   double shadow = 0.45;                 // brightness under the ball (1 = no shadow)
 };
 
-/// The same camera rendering images scaled by `scale` (> 0): size rounded
-/// to whole pixels, the mirror centre with OpenCV's pixel-centre convention
-/// (c' = (c + 0.5) s - 0.5), every radius of the mirror profile times s
-/// (sim_node's ~camera_scale; mrt_recvision's scale_camera is the same
-/// function for the processing side). Throws std::invalid_argument for
-/// scale <= 0 or an image under 16 pixels.
-mrt::common::OmniCamera scale_camera(const mrt::common::OmniCamera& cam, double scale);
-
 /// The options of a robot's camera from its world-file configuration
 /// (mount, effects, body radius, seed).
 CameraOptions camera_options(const RobotConfig& robot, std::uint64_t seed);

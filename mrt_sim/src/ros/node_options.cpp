@@ -88,7 +88,7 @@ void apply_team_options(const NodeOptions& o, World& world) {
       if (r.sensors.camera.rate > 0.0) r.sensors.camera.rate = o.camera_rate;
   if (o.camera_scale != 1.0)
     for (RobotConfig& r : world.robots)
-      if (r.sensors.camera.rate > 0.0) r.sensors.camera.model = scale_camera(r.sensors.camera.model, o.camera_scale);
+      if (r.sensors.camera.rate > 0.0) r.sensors.camera.model = r.sensors.camera.model.scaled(o.camera_scale);
   if (o.seed >= 0) world.seed = static_cast<std::uint64_t>(o.seed);
 }
 

@@ -50,7 +50,7 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh);
 /// keeps only the robots named (in the world's order; throws
 /// std::invalid_argument naming the parameter for a name the world does not
 /// have), sets the rate of every camera the world gives and scales its
-/// image (scale_camera in mrt_sim/camera.h); a ~seed >= 0 replaces the
+/// image (mrt_common OmniCamera::scaled); a ~seed >= 0 replaces the
 /// world's seed.
 void apply_team_options(const NodeOptions& o, World& world);
 
