@@ -11,6 +11,9 @@
 // re-assigned by the allocation of that same cycle (10 Hz). So the job must
 // be another robot's by last heard + 1.0 s + one cycle (0.1 s), plus 0.1 s
 // for the messages' way through DCDT and the job topic on a loaded machine.
+// If play hands the job to another robot before the drop, the slot must
+// still be held by a survivor after the drop (SCARE's drop-out itself, at
+// most one cycle, is mrt_scare's gtest).
 // Play continues: the robot that took the job moves (0.5 m or more) in
 // the 20 s after.
 #include <gtest/gtest.h>
@@ -111,8 +114,19 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
   const double last = team.last_heard[victim];
   ROS_INFO("%s took %s %.3f s after %s was last heard (removed at %.3f, last heard %.3f)", heir.c_str(),
            slot.c_str(), taken - last, victim.c_str(), removed, last);
-  EXPECT_GT(taken - last, kDropTimeout - kCycle) << "re-assigned before the drop timeout: not by the drop";
   EXPECT_LE(taken - last, kDropTimeout + kCycle + kTransport);
+  if (taken - last <= kDropTimeout - kCycle) {
+    // Taken over by play before the drop (the allocation moved the job on
+    // its merits; seen once in 5 quiet runs): the slot must still be a
+    // survivor's once the silent robot is dropped, not left vacant.
+    ROS_INFO("%s was taken over by play before the drop; checking it is still held after the drop", slot.c_str());
+    const double after_drop = last + kDropTimeout + kCycle + kTransport;
+    wait_for([&] { return ros::Time::now().toSec() >= after_drop; }, 30.0);
+    bool held = false;
+    for (const auto& r : kRobots)
+      if (r != victim && team.job.count(r) && team.job.at(r) == slot) held = true;
+    EXPECT_TRUE(held) << slot << " left vacant after " << victim << " was dropped";
+  }
   // Play continues: the heir executes the job (it travels at least 0.5 m
   // in the 20 s after taking it); the ball's travel is logged.
   ASSERT_NE(team.latest(heir), nullptr);
