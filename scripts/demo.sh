@@ -77,9 +77,9 @@ echo "demo: simulator up after ${SECONDS} s; recording at most ${DURATION} s of 
 start=$(date +%s.%N)
 # Left out: /clock (`rosbag play --clock` publishes its own) and the growing
 # ground-truth trails (nav_msgs/Path, derivable from ground_truth).
-# RoboCup: not the four robots' camera images either (10 Hz x 900 kB each).
+# RoboCup and FollowMe: not the camera images either (10 Hz x 900 kB each).
 exclude='/clock|/rosout(_agg)?|.*/ground_truth_path'
-[ "$NAME" = robocup ] && exclude="$exclude|.*/camera/.*"
+[ "$NAME" = robocup ] || [ "$NAME" = followme ] && exclude="$exclude|.*/camera/.*"
 rosbag record --quiet -a -x "$exclude" --duration="$DURATION" -O "$OUT/demo.bag" \
   >"$OUT/rosbag.log" 2>&1 &
 bag=$!
