@@ -4,7 +4,7 @@
 # catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
 # the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
 # libFuzzer target for a bounded time (scripts/sanitize.sh; only with
-# SANITIZE=1 for now; FUZZ_SECONDS sets the time per target, 5 by default), prints the wall
+# SANITIZE=0 skips it; FUZZ_SECONDS sets the time per target, 5 by default), prints the wall
 # and CPU time of each phase, and prints, as its last line,
 # "N passed, M failed" counted over test cases.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -30,7 +30,7 @@ phase_done() {  # phase_done NAME
 }
 
 ensure_setup
-export SANITIZE="${SANITIZE:-0}"  # off by default until the whole run fits 30 min (README)
+export SANITIZE="${SANITIZE:-1}"  # on: the whole run took 26 min 36 s on a fresh clone (README)
 # Clean results for this run (the sanitizer stage writes there too).
 rm -rf "$ROOT/build/test_results"
 phase_done setup
