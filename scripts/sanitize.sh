@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The sanitizer and fuzzing stage of scripts/test.sh (issue 19), which runs
-# it when SANITIZE=1 (off by default until the whole command fits 30 min). Its results go to
+# it unless SANITIZE=0 (on by default: the whole command fits 30 min). Its results go to
 # build/test_results beside the others, so count_results.py counts them in
 # the final "N passed, M failed":
 #  * build_san/ (devel space devel_san/): the workspace configured with
