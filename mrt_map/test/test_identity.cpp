@@ -3,21 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "mrt_map/tracker.h"
+#include "observations.h"
 
 using namespace mrt::map;
+using mrt::map::test::obs;
 
-namespace {
-Observation obs(int cls, double x, double y, double var, double t) {
-  Observation o;
-  o.class_index = cls;
-  o.z = Vec2(x, y);
-  o.R = var * Mat2::Identity();
-  o.stamp = t;
-  o.robot = "r1";
-  o.sensors = {"r1/cam"};
-  return o;
-}
-}  // namespace
 
 TEST(Tracker, TwoNearAnchorsSwapFree) {
   // Two opponents 0.2 m apart (y = 0 and y = 0.2) moving together at 1 m/s

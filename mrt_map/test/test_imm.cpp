@@ -8,21 +8,11 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_map/imm.h"
 #include "mrt_map/tracker.h"
+#include "observations.h"
 
 using namespace mrt::map;
+using mrt::map::test::obs;
 
-namespace {
-Observation obs(int cls, double x, double y, double var, double t) {
-  Observation o;
-  o.class_index = cls;
-  o.z = Vec2(x, y);
-  o.R = var * Mat2::Identity();
-  o.stamp = t;
-  o.robot = "r1";
-  o.sensors = {"r1/cam"};
-  return o;
-}
-}  // namespace
 
 TEST(Imm, OneStepAgainstHandComputation) {
   // Markov matrix p = [[0.9, 0.1], [0.2, 0.8]] (quiet -> kicked 0.1, kicked

@@ -6,8 +6,10 @@
 
 #include "mrt_map/kalman.h"
 #include "mrt_map/tracker.h"
+#include "observations.h"
 
 using namespace mrt::map;
+using mrt::map::test::obs;
 
 namespace {
 const char* kModel =
@@ -17,16 +19,6 @@ const char* kModel =
     "tracker: {gate: 9.21, confirm_hits: 3, tentative_timeout: 0.3, coast_after: 0.3, drop_after: 1.0,\n"
     "          max_sigma: 100}\n";
 
-Observation obs(int cls, double x, double y, double var, double t, const std::string& sensor = "r1/cam") {
-  Observation o;
-  o.class_index = cls;
-  o.z = Vec2(x, y);
-  o.R = var * Mat2::Identity();
-  o.stamp = t;
-  o.robot = "r1";
-  o.sensors = {sensor};
-  return o;
-}
 }  // namespace
 
 TEST(Tracker, GatingAndKalmanUpdate) {

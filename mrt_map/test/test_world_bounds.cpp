@@ -7,20 +7,12 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_map/tracker.h"
 #include "mrt_map/world_model.h"
+#include "observations.h"
 
 using namespace mrt::map;
+using mrt::map::test::obs;
 
 namespace {
-Observation obs(int cls, double x, double y, double var, double t) {
-  Observation o;
-  o.class_index = cls;
-  o.z = Vec2(x, y);
-  o.R = var * Mat2::Identity();
-  o.stamp = t;
-  o.robot = "r1";
-  o.sensors = {"r1/cam"};
-  return o;
-}
 
 PerceptObject ball_at(double x, double y) {
   PerceptObject o;
