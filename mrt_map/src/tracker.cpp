@@ -72,12 +72,14 @@ void Tracker::coalesce() {
       Anchor& b = anchors_[j];
       if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
       if (!model_.compatible(a.class_index, b.class_index)) continue;
-      // Seen apart: the own sensors took a distinct observation for each
-      // this cycle (the association gives one observation to one anchor):
-      // two objects side by side, not one with two symbols; each keeps its
-      // id. (Not extended to one teammate's two tracks: a teammate's own
+      // Seen apart: one frame of an own sensor held a distinct observation
+      // for each this cycle (the association gives one observation to one
+      // anchor): two objects side by side, not one with two symbols; each
+      // keeps its id. Two frames of one sensor queued into one cycle (a
+      // lagging node) are not "apart": the second can open a duplicate.
+      // (Not extended to one teammate's two tracks: a teammate's own
       // duplicates would then keep ours apart; measured worse in map_bench.)
-      if (own_seen_.count(a.id) && own_seen_.count(b.id)) continue;
+      if (seen_in_one_frame(a.id, b.id)) continue;
       // Two lost anchors of a class with a cardinality: their predictions
       // meet where the objects crossed unseen; nothing says they are one.
       if (!seen_.count(a.id) && !seen_.count(b.id) && cardinality_class(a.class_index) >= 0) continue;
@@ -228,7 +230,15 @@ void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
   a->local_last_seen = a->last_seen = now;
   a->sources.insert(o.sensors.begin(), o.sensors.end());
   seen_.insert(a->id);
-  own_seen_.insert(a->id);
+  for (const auto& s : o.sensors) own_seen_[a->id].insert({s, o.stamp});
+}
+
+bool Tracker::seen_in_one_frame(std::uint32_t a, std::uint32_t b) const {
+  const auto fa = own_seen_.find(a), fb = own_seen_.find(b);
+  if (fa == own_seen_.end() || fb == own_seen_.end()) return false;
+  for (const auto& frame : fa->second)
+    if (fb->second.count(frame)) return true;
+  return false;
 }
 
 int Tracker::cardinality_class(int class_index) const {

@@ -45,3 +45,30 @@ TEST(Tracker, TwoNearAnchorsSwapFree) {
   const Mat4 S = a.fused.P + b.fused.P;
   EXPECT_LT(y.dot(S.ldlt().solve(y)), 9.49);
 }
+
+TEST(Tracker, TwoFramesOfOneSensorInOneCycleAreNotTwoObjects) {
+  // A lagging node: two frames of the same camera (stamps 1/30 s apart) of
+  // one opponent standing at (1, 0) reach one cycle, every 0.1 s, for 2 s.
+  // The association gives the first frame's observation to the anchor; the
+  // second one, for the same object, may open a second anchor. The two
+  // were not seen apart in one frame, so coalescence (gate 9.49, after
+  // 0.5 s) joins them: one anchor at (1, 0) at the end.
+  const ConceptualModel m = ConceptualModel::parse(
+      "classes:\n"
+      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2}\n"
+      "tracker: {gate: 9.21, confirm_hits: 3, coalesce_gate: 9.49, coalesce_after: 0.5}\n",
+      "m.yaml");
+  const int opp = m.find("Opponent");
+  Tracker tr(m);
+  for (int k = 0; k <= 20; ++k) {
+    const double t = 0.1 * k;
+    tr.cycle(t + 1.0 / 30.0, {obs(opp, 1.0, 0.0, 0.04, t), obs(opp, 1.0, 0.0, 0.04, t + 1.0 / 30.0)}, {});
+  }
+  std::size_t alive = 0;
+  for (const Anchor& a : tr.anchors())
+    if (a.status != AnchorStatus::kDropped) {
+      ++alive;
+      EXPECT_NEAR(a.fused.x(0), 1.0, 0.05);
+    }
+  EXPECT_EQ(alive, 1u);
+}

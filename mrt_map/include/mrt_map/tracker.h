@@ -86,7 +86,10 @@ class Tracker {
   };
   std::map<std::string, TeammatePose> teammates_;
   std::set<std::uint32_t> seen_;  // anchors supported this cycle
-  std::set<std::uint32_t> own_seen_;  // anchors an own observation updated this cycle
+  // The frames (sensor, stamp) of the own observations that updated each
+  // anchor this cycle.
+  std::map<std::uint32_t, std::set<std::pair<std::string, double>>> own_seen_;
+  bool seen_in_one_frame(std::uint32_t a, std::uint32_t b) const;
 };
 
 }  // namespace mrt::map
