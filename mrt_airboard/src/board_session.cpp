@@ -238,6 +238,10 @@ void BoardSession::control(double now) {
     if (backoff_.due(now)) connect(now);
     if (!link_->is_open()) return;
   }
+  // What waits in the line first: a node starved longer than link_timeout
+  // may run this before its read callback, with the board's frames unread.
+  read(now);
+  if (!link_->is_open()) return;
   const double last = last_frame_ >= 0.0 ? last_frame_ : opened_at_;
   if (now - last > o_.link_timeout) {
     disconnect("no valid frame for " + std::to_string(o_.link_timeout) + " s");

@@ -163,14 +163,17 @@ void PtyEmulator::run_on_source(const std::atomic<bool>& stop) {
   // The cable runs at its baud rate in the source's time too: a byte takes
   // 10 / baud s of source time, converted to wall time by the source's rate
   // over the last 100 ms of wall time (at a real-time factor of 2 the line
-  // carries twice the bytes per wall second, as the board sends them).
+  // carries twice the bytes per wall second, as the board sends them), but
+  // never slower than the real cable: a stalled source would otherwise
+  // choke the line (a factor of 0.01) and the frames of its catch-up
+  // would queue behind it until the PC declared the link lost.
   const Clock::duration byte_time = byte_time_;
   auto rate_since = Clock::now();
   double rate_source = time_source_();
   while (!stop.load(std::memory_order_relaxed)) {
     if (byte_time.count() > 0 && Clock::now() - rate_since >= std::chrono::milliseconds(100)) {
       const double wall = std::chrono::duration<double>(Clock::now() - rate_since).count(), src = time_source_();
-      const double factor = std::min(100.0, std::max(0.01, (src - rate_source) / wall));
+      const double factor = std::min(100.0, std::max(1.0, (src - rate_source) / wall));
       if (src > rate_source) byte_time_ = std::chrono::duration_cast<Clock::duration>(byte_time / factor);
       rate_since = Clock::now();
       rate_source = src;

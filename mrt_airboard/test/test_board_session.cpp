@@ -88,8 +88,8 @@ struct Fixture {
       : bench(c), session(o, std::make_unique<FakeLink>(&bench), &rec) {}
 
   // Runs `ms` milliseconds; `control` false stalls the control period (the
-  // node's process starved) while reads go on.
-  void run(int ms, bool control = true) {
+  // node's process starved) while reads go on; `reads` false stalls those.
+  void run(int ms, bool control = true, bool reads = true) {
     for (int i = 0; i < ms; ++i) {
       ++t_ms;
       bench.now = t_ms * 1e-3;
@@ -100,7 +100,7 @@ struct Fixture {
         std::uniform_int_distribution<int> bit(0, 7);
         for (uint8_t b : out) bench.to_pc.push_back(flip(bench.rng) ? static_cast<uint8_t>(b ^ (1u << bit(bench.rng))) : b);
       }
-      if (t_ms % 2 == 0) session.read(bench.now);
+      if (reads && t_ms % 2 == 0) session.read(bench.now);
       if (control && t_ms % 20 == 0) session.control(bench.now);
     }
   }
@@ -186,6 +186,22 @@ TEST(BoardSession, SilentBoardTimesOutAndKeepsBackingOff) {
   EXPECT_DOUBLE_EQ(f.session.next_reconnect_delay(), 0.8);
   EXPECT_FALSE(f.session.link_up());
   EXPECT_EQ(f.rec.states, 0);
+}
+
+// The node's process starved for 0.7 s (longer than link_timeout 0.5 s)
+// while the board went on streaming; when it runs again its control
+// callback comes first: the frames waiting in the line are taken before
+// the link is judged, so it is not lost.
+TEST(BoardSession, StarvedNodeReadsWaitingFramesBeforeJudgingTheLink) {
+  Fixture f;
+  f.run(1000);
+  ASSERT_TRUE(f.session.link_up());
+  const int states = f.rec.states;
+  f.run(700, false, false);
+  f.session.control(f.now());
+  EXPECT_TRUE(f.session.link_up());
+  EXPECT_EQ(f.rec.lost, 0);
+  EXPECT_GT(f.rec.states, states + 60);  // about 70 STATEs were waiting
 }
 
 TEST(BoardSession, WatchdogTripRestartsTheRampFromRest) {
