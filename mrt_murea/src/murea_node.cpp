@@ -50,6 +50,11 @@ class MureaNode {
     relocalize_srv_ = nh.advertiseService("relocalize", &MureaNode::on_relocalize, this);
     if (opt_.publish_tf)
       tf_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.tf_rate), [this](const ros::TimerEvent&) { send_tf(); });
+    if (opt_.initial_pose) {
+      tracker_.set_pose(*opt_.initial_pose, opt_.initial_cov);
+      ROS_INFO("murea: initial pose (%.2f, %.2f, %.1f deg) from the parameters", opt_.initial_pose->x,
+               opt_.initial_pose->y, opt_.initial_pose->theta * 180 / M_PI);
+    }
     diag_.setHardwareID("murea");
     diag_.add("murea localization", this, &MureaNode::diagnose);
     diag_timer_ = nh.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diag_.update(); });
@@ -124,6 +129,7 @@ class MureaNode {
       tracked_ms_.push_back(last_ms_);
     }
     last_ = r;
+    resolved_ += r.resolved;
     publish(r, msg.header.stamp, *odom);
   }
 
@@ -181,9 +187,9 @@ class MureaNode {
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
-    const bool ok = tracker_.tracking() && last_ && !last_->search.ambiguous;
-    s.summary(ok ? 0 : 1, !tracker_.tracking() ? "lost: searching globally"
-                          : (last_ && last_->search.ambiguous ? "tracking, ambiguous" : "tracking"));
+    const bool ambiguous = last_ && last_->search.ambiguous && !last_->resolved;
+    s.summary(tracker_.tracking() && last_ && !ambiguous ? 0 : 1,
+              !tracker_.tracking() ? "lost: searching globally" : (ambiguous ? "tracking, ambiguous" : "tracking"));
     s.add("percept frames", frames_);
     s.add("dropped: unknown frame", dropped_frame_);
     s.add("dropped: non-finite", drops_.non_finite);
@@ -201,7 +207,9 @@ class MureaNode {
       s.add("evidence", last_->search.best.evidence);
       s.add("max evidence", last_->max_evidence);
       s.add("ambiguous", last_->search.ambiguous);
+      s.add("complete", last_->search.complete);
     }
+    s.add("ambiguities resolved by the prior", resolved_);
   }
 
   NodeOptions opt_;
@@ -221,7 +229,7 @@ class MureaNode {
   std::vector<Percept> last_percepts_;
   std::optional<TrackResult> last_;
   DropCounts drops_;
-  std::size_t frames_ = 0, dropped_frame_ = 0, no_odom_ = 0;
+  std::size_t frames_ = 0, dropped_frame_ = 0, no_odom_ = 0, resolved_ = 0;
   double last_ms_ = 0.0;
   std::vector<double> tracked_ms_;
 };

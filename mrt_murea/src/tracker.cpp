@@ -4,6 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Dense>
+
+#include "mrt_common/angle.h"
+
 namespace mrt::murea {
 
 namespace {
@@ -65,13 +69,30 @@ void Tracker::predict(const Pose2D& delta, const Covariance3& q) {
 void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
   pose_ = pose;
   cov_ = covariance;
-  tracking_ = true;
+  tracking_ = has_prior_ = true;
   collapsed_frames_ = 0;
 }
 
 void Tracker::reset() {
-  tracking_ = false;
+  tracking_ = has_prior_ = false;
   collapsed_frames_ = 0;
+}
+
+const Hypothesis* Tracker::resolve_by_prior(const Result& r) const {
+  if (!has_prior_ || !(opt_.prior_gate > 0.0) || !r.complete || !r.alternative) return nullptr;
+  // The prior's covariance, at least the lattice's quantisation.
+  Eigen::Matrix3d s = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(cov_.data());
+  s.diagonal() += Eigen::Vector3d(std::pow(opt_.search.accuracy_xy, 2), std::pow(opt_.search.accuracy_xy, 2),
+                                  std::pow(opt_.search.accuracy_theta, 2));
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(s);
+  const auto admitted = [&](const Pose2D& p) {
+    const Eigen::Vector3d d(p.x - pose_.x, p.y - pose_.y, mrt::common::angle_diff(p.theta, pose_.theta));
+    const double m = d.dot(ldlt.solve(d));
+    return std::isfinite(m) && m <= opt_.prior_gate;
+  };
+  const bool best = admitted(r.best.pose), alt = admitted(r.alternative->pose);
+  if (best == alt) return nullptr;
+  return best ? &r.best : &*r.alternative;
 }
 
 std::array<double, 4> Tracker::window() const {
@@ -108,7 +129,11 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   // A search cut short by its timeout has not looked for the runner-up: its
   // best may be one of two modes (the symmetric field's mirror) as likely
   // as the other, so it is not tracked either (unless track_ambiguous).
-  const bool undecided = r.ambiguous || !r.complete;
+  // An ambiguous one may be resolved by the prior (the mirror is far from
+  // where odometry carried the last pose).
+  const Hypothesis* chosen = resolve_by_prior(r);
+  out.resolved = chosen != nullptr;
+  const bool undecided = (r.ambiguous && !chosen) || !r.complete;
   if (out.collapsed || (undecided && !opt_.track_ambiguous)) {
     // Nothing trustworthy, two modes, or not known: stay lost, keep the last pose.
     out.lost = true;
@@ -116,7 +141,11 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
     out.covariance = cov_;
     return out;
   }
-  if (r.complete) {
+  if (chosen && chosen != &r.best) {  // the runner-up: its own plateau
+    const Estimate e = loc.plateau(*chosen, percepts);
+    pose_ = e.mean;
+    cov_ = e.covariance;
+  } else if (r.complete) {
     pose_ = r.estimate.mean;
     cov_ = r.estimate.covariance;
   } else {  // anytime result: as uncertain as the largest window
@@ -126,7 +155,7 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
     cov_[8] = std::pow(opt_.max_window_theta / opt_.window_sigmas, 2);
   }
   out.refined = refine_pose(loc, percepts, false);
-  tracking_ = true;
+  tracking_ = has_prior_ = true;
   collapsed_frames_ = 0;
   out.pose = pose_;
   out.covariance = cov_;

@@ -218,6 +218,46 @@ TEST(Tracker, AmbiguousGlobalResultIsNotTrackedByDefault) {
   EXPECT_TRUE(t2.tracking());
 }
 
+// The same ambiguous frame after tracking was lost (three collapsed frames
+// of percepts from (4, -3, 2)): the prior, the last pose, admits one of the
+// two modes, (-2, 0, 0) or its half-turn mirror (2, 0, 180 deg), and that
+// one is tracked. A prior near the mirror takes the mirror (the prior, not
+// the search's order, decides); a prior as wide as the field admits both:
+// still lost; reset() forgets the prior.
+TEST(Tracker, AmbiguityResolvedByThePrior) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  std::vector<Percept> lines;
+  for (const Percept& p : percepts_at(w, Pose2D(-2, 0, 0)))
+    if (p.cls == FeatureClass::Line) lines.push_back(p);
+  const std::vector<Percept> elsewhere = percepts_at(w, Pose2D(4, -3, 2));
+  const auto after_loss = [&](const Pose2D& prior, const Covariance3& cov) {
+    Tracker t(map, TrackerOptions{});
+    t.set_pose(prior, cov);
+    for (int i = 0; i < 3; ++i) t.update(elsewhere);
+    EXPECT_FALSE(t.tracking());
+    const TrackResult r = t.update(lines);
+    return std::make_pair(r, t.tracking());
+  };
+  auto [near, tracked] = after_loss(Pose2D(-1.8, 0.1, 0.05), diag(0.04, 0.04, 0.01));
+  EXPECT_TRUE(near.search.ambiguous);
+  EXPECT_TRUE(near.resolved);
+  EXPECT_TRUE(tracked);
+  expect_near(near.pose, Pose2D(-2, 0, 0));
+  auto [mirror, tracked_mirror] = after_loss(Pose2D(1.8, -0.1, kPi + 0.05), diag(0.04, 0.04, 0.01));
+  EXPECT_TRUE(mirror.resolved);
+  EXPECT_TRUE(tracked_mirror);
+  expect_near(mirror.pose, Pose2D(2, 0, kPi));
+  auto [wide, tracked_wide] = after_loss(Pose2D(0, 0, kPi / 2), diag(100, 100, 100));
+  EXPECT_FALSE(wide.resolved);
+  EXPECT_FALSE(tracked_wide);
+  Tracker t(map, TrackerOptions{});
+  t.set_pose(Pose2D(-2, 0, 0), diag(0.04, 0.04, 0.01));
+  t.reset();
+  EXPECT_FALSE(t.update(lines).resolved);
+  EXPECT_FALSE(t.tracking());
+}
+
 // A global search cut short by its timeout has not looked for a runner-up.
 // A frame whose complete search is unambiguous (and tracked), searched
 // again with a CPU-time budget of 0.1 us (checked every 64 cells: cut

@@ -30,6 +30,12 @@ struct TrackerOptions {
   /// true, it is not ambiguous and the search completed (a timed-out search
   /// does not know its runner-up); else the next frame is searched globally too.
   bool track_ambiguous = false;
+  /// A complete but ambiguous global search (the symmetric field's mirror)
+  /// is resolved by the prior, the last accepted or set pose carried by
+  /// odometry: of the best pose and its runner-up, the one within this
+  /// squared Mahalanobis distance of the prior (x, y, theta) is taken when
+  /// the other is not. 0: never (no prior: stays ambiguous).
+  double prior_gate = 11.34;  // chi^2, 3 dof, 99 %
   /// After each accepted search, the pose is fitted to the matched
   /// percepts by least squares, fused with odometry's prediction while
   /// tracking (refine.h); disable to keep the plateau's mean.
@@ -47,6 +53,7 @@ struct TrackResult {
   bool collapsed = false;     // this frame's evidence was below the fraction
   bool lost = false;          // no accepted pose after this frame (pose is the last one)
   bool refined = false;       // the pose is the least-squares fit (refine.h)
+  bool resolved = false;      // an ambiguous global search resolved by the prior
 };
 
 class Tracker {
@@ -63,7 +70,7 @@ class Tracker {
 
   /// Sets the pose (e.g. initialpose) and starts tracking from it.
   void set_pose(const Pose2D& pose, const Covariance3& covariance);
-  /// Forgets the pose: the next update searches globally.
+  /// Forgets the pose and the prior: the next update searches globally.
   void reset();
 
   bool tracking() const { return tracking_; }
@@ -76,6 +83,9 @@ class Tracker {
 
  private:
   TrackResult global_update(const std::vector<Percept>& percepts, double max_evidence);
+  /// Of an ambiguous complete search, the hypothesis the prior admits
+  /// alone (prior_gate): &r.best or &*r.alternative; nullptr when both or neither.
+  const Hypothesis* resolve_by_prior(const Result& r) const;
   /// Replaces pose_ and cov_ (the search's estimate) by the least-squares
   /// fit, fused with the prediction when with_prior; false if not refined.
   bool refine_pose(const Localizer& loc, const std::vector<Percept>& percepts, bool with_prior,
@@ -84,6 +94,7 @@ class Tracker {
   const FeatureMap& map_;
   TrackerOptions opt_;
   bool tracking_ = false;
+  bool has_prior_ = false;  // pose_ and cov_ come from an accepted or set pose
   int collapsed_frames_ = 0;
   Pose2D pose_;
   Covariance3 cov_{};

@@ -67,6 +67,17 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
       .get_non_negative("odom_alpha_theta_xy", o.odom_alpha_theta_xy)
       .get_non_negative("transform_tolerance", o.transform_tolerance)
       .get_positive("tf_rate", o.tf_rate);
+  p.get_non_negative("prior_gate", t.prior_gate);
+  if (pnh.hasParam("initial_pose_x") || pnh.hasParam("initial_pose_y") || pnh.hasParam("initial_pose_a")) {
+    double x = 0.0, y = 0.0, a = 0.0;
+    p.get("initial_pose_x", x).get("initial_pose_y", y).get("initial_pose_a", a);
+    ParamReader::check(std::isfinite(x) && std::isfinite(y) && std::isfinite(a), "initial_pose_x",
+                       "finite ~initial_pose_x, ~initial_pose_y (m) and ~initial_pose_a (rad)");
+    o.initial_pose = Pose2D(x, y, a);
+  }
+  p.get_non_negative("initial_cov_xx", o.initial_cov[0])
+      .get_non_negative("initial_cov_yy", o.initial_cov[4])
+      .get_non_negative("initial_cov_aa", o.initial_cov[8]);
   return o;
 }
 

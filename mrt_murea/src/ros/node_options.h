@@ -27,6 +27,11 @@ struct NodeOptions {
   double transform_tolerance = 0.1;   // ~transform_tolerance: s the map -> odom tf is post-dated
   bool publish_tf = true;           // ~publish_tf
   double tf_rate = 20.0;            // ~tf_rate: Hz of map -> odom republication
+  /// ~initial_pose_x, ~initial_pose_y (m), ~initial_pose_a (rad), as amcl's:
+  /// tracking starts there when any of them is set (else a global search).
+  std::optional<Pose2D> initial_pose;
+  /// ~initial_cov_xx, ~initial_cov_yy (m^2), ~initial_cov_aa (rad^2): amcl's defaults.
+  Covariance3 initial_cov{0.25, 0, 0, 0, 0.25, 0, 0, 0, 0.06853891945200942};
 };
 
 /// Reads and validates the private parameters (ParamError naming the parameter).
