@@ -45,7 +45,11 @@ class TeamWatch {
       // hears of its teammates.
       subs_.push_back(nh_.subscribe<mrt_msgs::CoordinationParameters>(
           "/" + r + "/scare/team", 50, [this, r](const mrt_msgs::CoordinationParameters::ConstPtr& m) {
-            if (m->robot_id == r) return;  // its own
+            if (m->robot_id == r) {  // its own: when it took its intention, on its own clock
+              auto& v = intentions[r];
+              if (v.empty() || v.back().second != m->intention) v.push_back({m->intention_since, m->intention});
+              return;
+            }
             double& last = last_heard[m->robot_id];
             last = std::max(last, m->header.stamp.toSec());
           }));
@@ -75,6 +79,9 @@ class TeamWatch {
   std::map<std::string, std::string> job;
   std::map<std::string, std::vector<std::pair<double, std::string>>> job_changes;
   std::map<std::string, double> last_heard;  // newest stamp of each robot's coordination message, heard by a teammate
+  /// Each robot's intentions as it announced them: (taken at, slot), its
+  /// coordinator's sim time of the cycle that took it (0: not carried).
+  std::map<std::string, std::vector<std::pair<double, std::string>>> intentions;
 
  private:
   ros::NodeHandle nh_;

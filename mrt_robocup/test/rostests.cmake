@@ -24,7 +24,10 @@ if(CATKIN_ENABLE_TESTING)
   # robot was last heard (limit 1.2 s: drop_timeout 1 s + one cycle + 0.1 s).
   # Whether the extra 0.1-0.2 s is the coordinators' cycles lagging or an
   # allocation that waits a cycle is not known yet (README "Bringup
-  # rostests"). Run it by hand: rostest mrt_robocup removal.test
+  # rostests"). Since then the take is timed on the heir's own clock (its
+  # team message's intention_since): 1.099 s twice on a quiet machine,
+  # 1.193 s at load 5, still too close to register.
+  # Run it by hand: rostest mrt_robocup removal.test
   # add_rostest(test/removal.test DEPENDENCIES ${PROJECT_NAME}_removal_rostest)
   # The scoring test (issue: 4 of 5 seeded runs score within 120 s) is built
   # but not registered: the distributed team scores in fewer than 4 of
