@@ -234,6 +234,11 @@ void BoardSession::send(const Frame& f) {
 // ---------------------------------------------------------------- control
 
 void BoardSession::control(double now) {
+  // Time this session did not run (a starved process, a simulated clock's
+  // jump) is not the board's silence: after a gap of half the link timeout
+  // the board gets a whole timeout again.
+  if (last_judged_ >= 0.0 && now - last_judged_ > 0.5 * o_.link_timeout) resumed_ = now;
+  last_judged_ = now;
   if (!link_->is_open()) {
     if (backoff_.due(now)) connect(now);
     if (!link_->is_open()) return;
@@ -242,7 +247,7 @@ void BoardSession::control(double now) {
   // may run this before its read callback, with the board's frames unread.
   read(now);
   if (!link_->is_open()) return;
-  const double last = last_frame_ >= 0.0 ? last_frame_ : opened_at_;
+  const double last = std::max(last_frame_ >= 0.0 ? last_frame_ : opened_at_, resumed_);
   if (now - last > o_.link_timeout) {
     disconnect("no valid frame for " + std::to_string(o_.link_timeout) + " s");
     backoff_.failed(now);

@@ -204,6 +204,26 @@ TEST(BoardSession, StarvedNodeReadsWaitingFramesBeforeJudgingTheLink) {
   EXPECT_GT(f.rec.states, states + 60);  // about 70 STATEs were waiting
 }
 
+// A simulated clock that jumps 0.8 s (the simulator stalled, then caught
+// up; the board, on the same clock, sent nothing meanwhile): the time the
+// session did not run is not the board's silence, the link stays up. A
+// silent board still times out: 0.5 s of control periods after the jump.
+TEST(BoardSession, ClockJumpIsNotSilence) {
+  Fixture f;
+  f.run(1000);
+  ASSERT_TRUE(f.session.link_up());
+  f.t_ms += 800;
+  f.run(100);
+  EXPECT_TRUE(f.session.link_up());
+  EXPECT_EQ(f.rec.lost, 0);
+  f.t_ms += 800;
+  f.bench.mute = true;
+  f.run(480);
+  EXPECT_EQ(f.rec.lost, 0);
+  f.run(60);
+  EXPECT_EQ(f.rec.lost, 1);
+}
+
 TEST(BoardSession, WatchdogTripRestartsTheRampFromRest) {
   SessionOptions o = options();
   o.base.max_wheel_accel = 100.0;  // rad/s^2: 100 x 0.02 s = 2 rad/s per control period

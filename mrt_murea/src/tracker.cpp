@@ -135,7 +135,13 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   out.resolved = chosen != nullptr;
   const bool undecided = (r.ambiguous && !chosen) || !r.complete;
   if (out.collapsed || (undecided && !opt_.track_ambiguous)) {
-    // Nothing trustworthy, two modes, or not known: stay lost, keep the last pose.
+    // Nothing trustworthy, two modes, or not known: stay lost, keep the last
+    // pose; two modes the prior did not tell apart widen it.
+    if (r.ambiguous && has_prior_) {
+      cov_[0] += opt_.lost_growth_xy * opt_.lost_growth_xy;
+      cov_[4] += opt_.lost_growth_xy * opt_.lost_growth_xy;
+      cov_[8] += opt_.lost_growth_theta * opt_.lost_growth_theta;
+    }
     out.lost = true;
     out.pose = pose_;
     out.covariance = cov_;

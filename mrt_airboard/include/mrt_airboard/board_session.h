@@ -203,6 +203,8 @@ class BoardSession {
   bool ever_answered_ = false;
   double opened_at_ = 0.0;
   double last_frame_ = -1.0;
+  double last_judged_ = -1.0;  // the previous control() call, for the link's silence
+  double resumed_ = -1.0;       // the last control() after a gap (silence counts from here)
   bool info_ok_ = false;
   BoardInfo info_;
   uint64_t info_polls_ = 0;

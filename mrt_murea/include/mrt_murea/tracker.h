@@ -36,6 +36,12 @@ struct TrackerOptions {
   /// squared Mahalanobis distance of the prior (x, y, theta) is taken when
   /// the other is not. 0: never (no prior: stays ambiguous).
   double prior_gate = 11.34;  // chi^2, 3 dof, 99 %
+  /// While lost, each frame whose global search stays ambiguous grows the
+  /// prior's standard deviations by these (in quadrature), so a prior gone
+  /// wrong before the loss admits the nearer mode first, never both at once
+  /// unless they are equally near. 0: the prior stays as odometry left it.
+  double lost_growth_xy = 0.1;      // m per frame
+  double lost_growth_theta = 0.1;   // rad per frame
   /// After each accepted search, the pose is fitted to the matched
   /// percepts by least squares, fused with odometry's prediction while
   /// tracking (refine.h); disable to keep the plateau's mean.

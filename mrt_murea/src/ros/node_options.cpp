@@ -67,7 +67,9 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
       .get_non_negative("odom_alpha_theta_xy", o.odom_alpha_theta_xy)
       .get_non_negative("transform_tolerance", o.transform_tolerance)
       .get_positive("tf_rate", o.tf_rate);
-  p.get_non_negative("prior_gate", t.prior_gate);
+  p.get_non_negative("prior_gate", t.prior_gate)
+      .get_non_negative("lost_growth_xy", t.lost_growth_xy)
+      .get_non_negative("lost_growth_theta", t.lost_growth_theta);
   if (pnh.hasParam("initial_pose_x") || pnh.hasParam("initial_pose_y") || pnh.hasParam("initial_pose_a")) {
     double x = 0.0, y = 0.0, a = 0.0;
     p.get("initial_pose_x", x).get("initial_pose_y", y).get("initial_pose_a", a);
