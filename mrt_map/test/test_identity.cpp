@@ -8,6 +8,18 @@
 using namespace mrt::map;
 using mrt::map::test::obs;
 
+namespace {
+
+// Opponents with a constant-velocity model; coalescence after 0.5 s within 9.49.
+ConceptualModel opponents_model() {
+  return ConceptualModel::parse(
+      "classes:\n"
+      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2}\n"
+      "tracker: {gate: 9.21, confirm_hits: 3, coalesce_gate: 9.49, coalesce_after: 0.5}\n",
+      "m.yaml");
+}
+
+}  // namespace
 
 TEST(Tracker, TwoNearAnchorsSwapFree) {
   // Two opponents 0.2 m apart (y = 0 and y = 0.2) moving together at 1 m/s
@@ -18,11 +30,7 @@ TEST(Tracker, TwoNearAnchorsSwapFree) {
   // were joined into id 1 after 0.5 s. Each anchor takes its own
   // observation every cycle (Hungarian on d2: 0 for its own, ~0.6 for the
   // other's), so both stay, with their ids on their sides.
-  const ConceptualModel m = ConceptualModel::parse(
-      "classes:\n"
-      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2}\n"
-      "tracker: {gate: 9.21, confirm_hits: 3, coalesce_gate: 9.49, coalesce_after: 0.5}\n",
-      "m.yaml");
+  const ConceptualModel m = opponents_model();
   const int opp = m.find("Opponent");
   Tracker tr(m);
   for (int k = 0; k <= 60; ++k) {
@@ -53,11 +61,7 @@ TEST(Tracker, TwoFramesOfOneSensorInOneCycleAreNotTwoObjects) {
   // second one, for the same object, may open a second anchor. The two
   // were not seen apart in one frame, so coalescence (gate 9.49, after
   // 0.5 s) joins them: one anchor at (1, 0) at the end.
-  const ConceptualModel m = ConceptualModel::parse(
-      "classes:\n"
-      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2}\n"
-      "tracker: {gate: 9.21, confirm_hits: 3, coalesce_gate: 9.49, coalesce_after: 0.5}\n",
-      "m.yaml");
+  const ConceptualModel m = opponents_model();
   const int opp = m.find("Opponent");
   Tracker tr(m);
   for (int k = 0; k <= 20; ++k) {
