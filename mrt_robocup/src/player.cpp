@@ -61,6 +61,10 @@ PlayerOutput Player::cycle(const PlayerInput& in) {
   for (const brian::Command& c : out.commands) {
     named.emplace_back(c.name, c.value);
     if (c.name == o_.kick_name && std::isfinite(c.value) && c.value > 0.0 && in.time - last_kick_ >= o_.kick_cooldown) {
+      if (std::abs(in.omega) > o_.kick_max_omega) {  // NaN: unknown, not held
+        out.kick_held = true;
+        continue;
+      }
       out.kick = true;
       out.kick_strength = std::clamp(c.value, 0.0, 1.0);
     }
@@ -76,6 +80,7 @@ PlayerOutput Player::cycle(const PlayerInput& in) {
     out.twist.vy *= vmax / v;
   }
   out.twist.omega = std::clamp(out.twist.omega, -wmax, wmax);
+  if (out.kick_held) out.twist.omega = 0.0;  // settle the aim: the rules kick next cycle if it still holds
   if (out.kick) last_kick_ = in.time;
   const Situation& s = out.situation;
   out.dribble = !out.kick && s.ball_seen &&

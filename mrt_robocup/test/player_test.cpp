@@ -4,6 +4,8 @@
 // and the singletons (*/s_shape.txt).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -158,6 +160,33 @@ TEST(Player, KicksWhenTheShotIsClear) {
     in.time += 0.1;
     EXPECT_FALSE(p.cycle(in).kick) << k;
   }
+}
+
+// The same clear shot while the odometry says the robot turns: 0.5 rad/s
+// (above kick_max_omega 0.1) holds the kick; once it turns at 0.1 rad/s or
+// less, or the turn rate is unknown (NaN), it kicks. Turning right (-0.5)
+// holds it too. While the kick is held the turn is stopped (omega 0), so
+// the robot settles instead of swinging through the aim.
+TEST(Player, NoKickWhileTurning) {
+  Player p(options("differential"));
+  PlayerInput in = ball_ahead(6.36, 0.85);
+  in.pose = Pose2D(6.0, 0.85, 0.0);
+  in.possession_known = true;
+  in.possession = true;
+  for (double w : {0.5, -0.5, 0.11}) {
+    in.omega = w;
+    const PlayerOutput out = p.cycle(in);
+    EXPECT_FALSE(out.kick) << w;
+    EXPECT_TRUE(out.kick_held) << w;
+    EXPECT_EQ(out.twist.omega, 0.0) << w;  // it stops turning to settle the aim
+  }
+  in.omega = -0.1;
+  PlayerOutput out = p.cycle(in);
+  EXPECT_TRUE(out.kick);
+  EXPECT_FALSE(out.kick_held);
+  Player q(options("differential"));
+  in.omega = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(q.cycle(in).kick);
 }
 
 // An opponent on the shot line: no kick.

@@ -93,6 +93,7 @@ Match::Match(MatchConfig cfg, Simulator& sim)
   }
   pending_kick_.assign(sim_.robots().size(), -1.0);
   dribbler_.assign(sim_.robots().size(), false);
+  dribbler_since_.assign(sim_.robots().size(), 0.0);
   opponent_cooldown_.assign(cfg_.opponents.size(), 0.0);
   if (cfg_.referee.auto_start) {
     restart_pending_ = true;
@@ -107,7 +108,10 @@ void Match::kick(std::size_t robot, double strength) {
   pending_kick_.at(robot) = std::clamp(strength, 0.0, 1.0);
 }
 
-void Match::set_dribbler(std::size_t robot, bool on) { dribbler_.at(robot) = on; }
+void Match::set_dribbler(std::size_t robot, bool on) {
+  dribbler_.at(robot) = on;
+  dribbler_since_.at(robot) = sim_.time();
+}
 
 bool Match::in_reach(std::size_t robot) const {
   const RobotState& r = sim_.robots().at(robot);
@@ -201,6 +205,12 @@ void Match::robot_kicks() {
 void Match::ball_handling() {
   Ball& b = sim_.ball();
   holder_ = -1;
+  const double timeout = cfg_.kicker.dribble_timeout;
+  for (std::size_t i = 0; i < dribbler_.size(); ++i)
+    if (dribbler_[i] && timeout > 0.0 && sim_.time() - dribbler_since_[i] > timeout + 1e-9) {
+      dribbler_[i] = false;
+      ++dribble_timeouts_;
+    }
   for (std::size_t i = 0; i < dribbler_.size(); ++i) {
     const bool kicked = pending_kick_[i] == -2.0;
     pending_kick_[i] = std::max(pending_kick_[i], -1.0);
@@ -266,6 +276,38 @@ void Match::place_ball(const Point2D& p) {
   b.velocity = {0.0, 0.0};
 }
 
+Point2D Match::free_spot(const Point2D& p) const {
+  const Ball& b = sim_.world().ball;
+  const double margin = 0.05;  // m of air between the ball and a body
+  auto free = [&](const Point2D& q) {
+    for (const RobotState& r : sim_.robots())
+      if (dist({r.pose.x, r.pose.y}, q) < r.config.base.body_radius + b.radius + margin) return false;
+    for (std::size_t idx : opponent_movers_) {
+      const Mover& m = sim_.world().movers[idx];
+      if (dist(m.position, q) < m.radius + b.radius + margin) return false;
+    }
+    return true;
+  };
+  if (free(p)) return p;
+  // On the field (lines included): within the touch lines and goal lines.
+  const Point2D c0 = mouth(own_goal_), c1 = mouth(other_goal_), axis = unit(sub(c1, c0));
+  const Point2D centre = add(c0, sub(c1, c0), 0.5), normal{-axis.y, axis.x};
+  const double half_length = dist(c0, c1) / 2;
+  auto on_field = [&](const Point2D& q) {
+    const Point2D d = sub(q, centre);
+    return std::abs(dot(d, axis)) <= half_length + 1e-9 && std::abs(dot(d, normal)) <= cfg_.field_half_width + 1e-9;
+  };
+  // The nearest free point: rings 5 cm apart, 32 directions each.
+  constexpr int kDirections = 32;
+  for (int ring = 1; ring <= 100; ++ring)
+    for (int k = 0; k < kDirections; ++k) {
+      const double a = 2.0 * M_PI * k / kDirections, r = 0.05 * ring;
+      const Point2D q{p.x + r * std::cos(a), p.y + r * std::sin(a)};
+      if (on_field(q) && free(q)) return q;
+    }
+  return p;  // crowded for 5 m around: leave it where it was
+}
+
 void Match::stoppage(RefereeCommand restart, int team, const Point2D& p, const std::string& reason) {
   state_ = State::kStopped;
   emit(RefereeCommand::kStop, -1, sim_.world().ball.position, reason);
@@ -317,13 +359,14 @@ void Match::referee() {
   Ball& b = sim_.ball();
   if (restart_pending_ && now >= restart_time_ - 1e-9) {
     restart_pending_ = false;
-    place_ball(restart_position_);
     if (restart_ == RefereeCommand::kKickOff)
       for (std::size_t k = 0; k < opponent_movers_.size(); ++k) {
         Mover& m = sim_.movers()[opponent_movers_[k]];
         m.position = cfg_.opponents[k].home;
         m.velocity = {0.0, 0.0};
       }
+    restart_position_ = free_spot(restart_position_);
+    place_ball(restart_position_);
     emit(restart_, restart_team_, restart_position_, "restart");
     start_pending_ = true;
     restart_time_ = now + cfg_.referee.restart_delay;

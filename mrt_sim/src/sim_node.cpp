@@ -43,7 +43,9 @@ class SimNode {
   SimNode(ros::NodeHandle& nh, NodeOptions opt, World world, const MatchConfig* match)
       : opt_(std::move(opt)), sim_(std::move(world), opt_.dt()), updater_(nh, ros::NodeHandle("~")) {
     if (match) {  // the world was prepared by setup_match_world
-      match_ = std::make_unique<Match>(*match, sim_);
+      MatchConfig cfg = *match;
+      cfg.kicker.dribble_timeout = opt_.dribble_timeout;
+      match_ = std::make_unique<Match>(cfg, sim_);
       match_if_ = std::make_unique<MatchInterface>(nh, *match_, opt_.world_frame);
       updater_.add("match", [this](diagnostic_updater::DiagnosticStatusWrapper& s) { match_if_->diagnose(s); });
     }

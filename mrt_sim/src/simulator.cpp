@@ -157,7 +157,12 @@ void Simulator::step() {
     const Pose2D next = r.pose * exp_twist(t.vx, t.vy, t.omega, dt_);
     r.bumped = blocked(i, r.pose, next);
     if (r.bumped) {
-      r.twist = Twist2D{};  // the wheels slip: encoders count, the mice do not
+      // The wheels slip: encoders count, the mice do not. The footprint is a
+      // circle, so turning on the spot never deepens an overlap: the robot
+      // still turns (else a robot arcing into an obstacle froze for good,
+      // seen in the RoboCup demo against an opponent).
+      r.pose.theta = next.theta;
+      r.twist = Twist2D{0.0, 0.0, t.omega};
     } else {
       r.pose = next;
       r.twist = t;

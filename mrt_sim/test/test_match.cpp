@@ -143,6 +143,29 @@ TEST(Match, DribbledBallStaysAtTheKickerWithinTheLimits) {
   EXPECT_GT(std::hypot(f.sim.ball().position.x - kicker.x, f.sim.ball().position.y - kicker.y), 0.1);
 }
 
+TEST(Match, BallHandlerLetsGoWithoutARepeatedOn) {
+  // dribble_timeout 0.5 s, dt 1 ms, the robot still with the ball at its
+  // kicker: held while the on is repeated every 0.1 s (1 s), then, without
+  // a repeat, for 0.5 s after the last on and not after: steps 1..500
+  // after it hold, from step 501 on the handler is off (one timeout).
+  MatchConfig c = quiet();
+  c.kicker.dribble_timeout = 0.5;
+  Fixture f(field("{x: 0.36, y: 0, friction: 0.4}", "[0, 0, 0]"), c);
+  for (int k = 0; k < 1000; ++k) {
+    if (k % 100 == 0) f.match.set_dribbler(0, true);
+    f.match.step();
+    ASSERT_EQ(f.match.holder(), 0) << k;
+  }
+  f.match.set_dribbler(0, true);  // at t = 1.0 s
+  int held = 0;
+  for (int k = 0; k < 1000; ++k) {
+    f.match.step();
+    held += f.match.holder() == 0;
+  }
+  EXPECT_EQ(held, 500);
+  EXPECT_EQ(f.match.dribble_timeouts(), 1);
+}
+
 TEST(Match, GoalBetweenThePostsScoresAndRestartsWithAKickOff) {
   // Automatic kick-off for team 0 at t = 1 ms, start 0.5 s later.
   MatchConfig c = quiet();
@@ -186,6 +209,17 @@ TEST(Match, GoalBetweenThePostsScoresAndRestartsWithAKickOff) {
   EXPECT_EQ(f.match.score()[0], 1);
 }
 
+// A throw-in for `team` announced at `spot`, where the ball now lies.
+void expect_throw_in(const Fixture& f, int team, const Point2D& spot) {
+  const RefereeEvent* t = f.find(RefereeCommand::kThrowIn);
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(t->team, team);
+  EXPECT_NEAR(t->position.x, spot.x, 1e-9);
+  EXPECT_NEAR(t->position.y, spot.y, 1e-9);
+  EXPECT_NEAR(f.sim.world().ball.position.x, spot.x, 1e-9);
+  EXPECT_NEAR(f.sim.world().ball.position.y, spot.y, 1e-9);
+}
+
 TEST(Match, BallOverTheTouchLineGivesAThrowIn) {
   // The robot at (2, 5) facing +y kicks at 0.25 * 8 = 2 m/s: the ball
   // crosses y = 6 + 0.11 at x = 2. Last touch team 0: throw-in for team 1
@@ -196,13 +230,30 @@ TEST(Match, BallOverTheTouchLineGivesAThrowIn) {
   f.match.kick(0, 0.25);
   f.run(1.0);
   ASSERT_NE(f.find(RefereeCommand::kStop), nullptr);
-  const RefereeEvent* t = f.find(RefereeCommand::kThrowIn);
-  ASSERT_NE(t, nullptr);
-  EXPECT_EQ(t->team, 1);
-  EXPECT_NEAR(t->position.x, 2.0, 1e-9);
-  EXPECT_NEAR(t->position.y, 6.0, 1e-9);
-  EXPECT_NEAR(f.sim.ball().position.y, 6.0, 1e-9);
+  expect_throw_in(f, 1, {2.0, 6.0});
   EXPECT_EQ(f.sim.ball().velocity.y, 0.0);
+}
+
+TEST(Match, ThrowInSpotUnderARobotMovesToTheNearestFreePoint) {
+  // The robot at (2, 5.8) touches the ball at (2, 6.16) (0.36 m = 0.25 +
+  // 0.11), which is over the touch line (6.16 > 6 + 0.11): throw-in for
+  // team 1 at (2, 6), 0.2 m from the robot's centre, inside its body. The
+  // referee puts the ball on the nearest point of the field (y <= 6) at
+  // least 0.25 + 0.11 + 0.05 = 0.41 m from it, on rings 5 cm apart: along
+  // the line, r^2 + 0.2^2 >= 0.41^2 needs r >= 0.358, so r = 0.40 and the
+  // first direction (+x): (2.40, 6). Seen in the bringup before: the ball
+  // put inside the robot was pushed out at once, throw-in after throw-in.
+  MatchConfig c = quiet();
+  Fixture f(field("{x: 2, y: 6.16, friction: 0.4}", "[2, 5.8, 90]"), c);
+  f.match.command(RefereeCommand::kStart);
+  f.run(0.6);
+  expect_throw_in(f, 1, {2.40, 6.0});
+  // Play restarts 0.5 s later and the ball stays in.
+  f.events.clear();
+  f.run(1.0);
+  EXPECT_NE(f.find(RefereeCommand::kStart), nullptr);
+  EXPECT_EQ(f.find(RefereeCommand::kStop), nullptr);
+  EXPECT_EQ(f.match.state(), Match::State::kPlaying);
 }
 
 TEST(Match, GoalkeeperStaysBetweenBallAndGoalCentre) {

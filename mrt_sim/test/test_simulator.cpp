@@ -138,6 +138,25 @@ TEST(Simulator, RobotStopsAtWallWhileWheelsSlip) {
   EXPECT_NEAR(r.pose.x, 0.25, 0.001);
 }
 
+TEST(Simulator, RobotAgainstAWallStillTurnsAndDrivesOff) {
+  // Touching the wall at x = 1 (centre at 0.75, facing it), forward 0.5
+  // m/s while turning 1 rad/s: every step has a +x component while the
+  // heading is below 90 degrees, so the robot stays at x = 0.75 but turns
+  // on the spot: 1.0 rad after 1 s. Past pi/2 (1.57 s) the arc leads away
+  // from the wall: after 2 s it has left it.
+  Simulator sim = make("walls:\n  - [1, -5, 1, 5]\n", "  - {name: r, base: ianus3, pose: [0.75, 0, 0]}\n");
+  sim.set_twist(0, {0.5, 0.0, 1.0});
+  run(sim, 1.0);
+  const RobotState& r = sim.robots()[0];
+  EXPECT_TRUE(r.bumped);
+  EXPECT_EQ(r.pose.x, 0.75);
+  EXPECT_NEAR(r.pose.theta, 1.0, 1e-9);
+  EXPECT_NEAR(r.twist.omega, 1.0, 1e-9);
+  run(sim, 1.0);
+  EXPECT_FALSE(r.bumped);
+  EXPECT_LT(r.pose.x, 0.75);
+}
+
 TEST(Simulator, OverlapCanBeLeftNotDeepened) {
   // The robot starts overlapping a post 0.3 m ahead (0.25 + 0.1 > 0.3).
   Simulator sim = make("posts:\n  - {name: p, x: 0.3, y: 0, radius: 0.1}\n", kOneRobot);

@@ -33,6 +33,9 @@ class BridgeMember : public Member {
   /// counted it with count_error).
   using Deliver = std::function<bool(const TopicMapping& m, const Msg& msg, const XmlMessage* xml)>;
 
+  /// Period of a Member with no DCDT -> ROS mapping (it receives nothing).
+  static constexpr int kIdlePeriodMs = 100;
+
   BridgeMember(Agora* agora, BridgeMapping mapping, Deliver deliver);
   void init() override;
   void do_your_job(int pending) override;

@@ -17,6 +17,7 @@
 #include <std_msgs/String.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -55,6 +56,7 @@ struct NodeOptions {
         .get_positive("carry_max_omega", pl.carry_max_omega)
         .get_non_negative("dribble_distance", pl.dribble_distance)
         .get_non_negative("kick_cooldown", pl.kick_cooldown)
+        .get_positive("kick_max_omega", pl.kick_max_omega)
         .get_non_negative("job_hold", pl.job_hold)
         .get("play_without_referee", pl.play_without_referee)
         .get_positive("body_radius", s.body_radius)
@@ -88,6 +90,7 @@ class PlayerNode {
     team_sub_ = nh.subscribe(o_.team_topic, 50, &PlayerNode::on_team, this);
     referee_sub_ = nh.subscribe(o_.referee_topic, 20, &PlayerNode::on_referee, this);
     possession_sub_ = nh.subscribe("ball_possession", 10, &PlayerNode::on_possession, this);
+    turn_sub_ = nh.subscribe("odom", 10, &PlayerNode::on_turn, this);
     diag_.setHardwareID(o_.robot_id);
     diag_.add("RoboCup player", this, &PlayerNode::diagnose);
     timer_ = nh.createTimer(ros::Duration(1.0 / o_.rate), &PlayerNode::cycle, this);
@@ -143,6 +146,13 @@ class PlayerNode {
     if (!Player::playing(in_.referee, o_.player.play_without_referee)) halt();  // at once, not next cycle
   }
 
+  // The turn rate that gates the kick (PlayerOptions::kick_max_omega).
+  void on_turn(const nav_msgs::Odometry::ConstPtr& m) {
+    if (!std::isfinite(m->twist.twist.angular.z)) return drop("odometry");
+    in_.omega = m->twist.twist.angular.z;
+    turn_stamp_ = now();
+  }
+
   void on_possession(const std_msgs::Bool::ConstPtr& m) {
     in_.possession = m->data;
     possession_stamp_ = now();
@@ -166,6 +176,7 @@ class PlayerNode {
     const double t = now();
     in_.time = t;
     in_.pose_valid = t - pose_stamp_ <= o_.pose_timeout;
+    if (t - turn_stamp_ > o_.pose_timeout) in_.omega = std::numeric_limits<double>::quiet_NaN();
     if (t - world_stamp_ > o_.world_timeout) in_.anchors.clear();
     in_.possession_known = t - possession_stamp_ <= o_.possession_timeout;
     if (t - scare_stamp_ <= o_.coordination_timeout) in_.coordination = scare_crisp_;
@@ -183,7 +194,10 @@ class PlayerNode {
       kick_pub_.publish(k);
       ++kicks_;
     }
-    if (out.dribble != dribbling_) {
+    if (out.kick_held) ++kicks_held_;
+    // Repeated every cycle while on: mrt_sim's ball handler lets the ball go
+    // without it for ~dribble_timeout (so does a robot whose player died).
+    if (out.dribble || out.dribble != dribbling_) {
       std_msgs::Bool b;
       b.data = out.dribble;
       dribble_pub_.publish(b);
@@ -220,6 +234,7 @@ class PlayerNode {
     s.add("ball owned", last_.situation.owned);
     s.add("cycles", cycles_);
     s.add("kicks", kicks_);
+    s.add("kicks held while turning", kicks_held_);
     s.add("job changes", job_changes_);
     s.add("dropped messages", dropped_);
   }
@@ -230,12 +245,12 @@ class PlayerNode {
   PlayerOutput last_;
   Parameters scare_crisp_, model_parameters_;
   std::map<std::string, TeamEntry> team_;
-  double pose_stamp_ = -1e9, world_stamp_ = -1e9, scare_stamp_ = -1e9, possession_stamp_ = -1e9;
+  double pose_stamp_ = -1e9, turn_stamp_ = -1e9, world_stamp_ = -1e9, scare_stamp_ = -1e9, possession_stamp_ = -1e9;
   bool dribbling_ = false;
   std::string job_, referee_name_;
-  std::uint64_t cycles_ = 0, kicks_ = 0, job_changes_ = 0, dropped_ = 0;
+  std::uint64_t cycles_ = 0, kicks_ = 0, kicks_held_ = 0, job_changes_ = 0, dropped_ = 0;
   ros::Publisher cmd_pub_, kick_pub_, dribble_pub_, crisp_pub_, job_pub_;
-  ros::Subscriber odom_sub_, pose_sub_, world_sub_, crisp_sub_, team_sub_, referee_sub_, possession_sub_;
+  ros::Subscriber odom_sub_, turn_sub_, pose_sub_, world_sub_, crisp_sub_, team_sub_, referee_sub_, possession_sub_;
   ros::Timer timer_;
   diagnostic_updater::Updater diag_;
 };

@@ -21,6 +21,10 @@ struct KickerConfig {
   double half_angle = 0.4;         // rad, the ball's bearing window around the heading
   double dribble_max_speed = 1.5;  // m/s, faster than this the ball is lost
   double dribble_max_omega = 2.0;  // rad/s, turning faster than this the ball is lost
+  /// s a set_dribbler(on) holds unless repeated (the handler's watchdog: a
+  /// robot whose software died lets the ball go); 0: until switched off.
+  /// Not in the match file: sim_node's ~dribble_timeout.
+  double dribble_timeout = 0.0;
 };
 
 /// A scripted opponent, simulated as a mover (a cylinder without heading).
@@ -94,7 +98,8 @@ class Match {
   /// (clamped to [0, 1]): if the ball is then in reach it leaves at
   /// strength * max_speed along the robot's heading.
   void kick(std::size_t robot, double strength);
-  /// Switches the ball handler of robot `robot` on or off.
+  /// Switches the ball handler of robot `robot` on or off (on: for
+  /// kicker.dribble_timeout when that is > 0).
   void set_dribbler(std::size_t robot, bool on);
   /// The ball is touching the front of robot `robot` (kick/hold window).
   bool in_reach(std::size_t robot) const;
@@ -113,6 +118,7 @@ class Match {
   int holder() const { return holder_; }             // robot holding the ball, -1 if none
   int last_touch() const { return last_touch_; }     // team that touched the ball last, -1 if none
   int kicks() const { return kicks_; }               // kicks that reached the ball
+  int dribble_timeouts() const { return dribble_timeouts_; }  // handlers off by the watchdog
   const MatchConfig& config() const { return cfg_; }
   /// Mouth centre of the goal team `team` defends.
   const Goal& goal_of(int team) const { return team == 0 ? own_goal_ : other_goal_; }
@@ -129,6 +135,11 @@ class Match {
   void referee();
   void emit(RefereeCommand c, int team, const Point2D& p, const std::string& reason);
   void place_ball(const Point2D& p);
+  /// Where the referee puts the ball for a restart at p: p, or, when a
+  /// robot or an opponent stands on it, the nearest point of the field
+  /// clear of every body (the ball placed inside a body was pushed over
+  /// the line again at once: throw-in after throw-in).
+  Point2D free_spot(const Point2D& p) const;
   void stoppage(RefereeCommand restart, int team, const Point2D& p, const std::string& reason);
 
   MatchConfig cfg_;
@@ -137,6 +148,8 @@ class Match {
   std::vector<std::size_t> opponent_movers_;   // index of each opponent in sim.movers()
   std::vector<double> pending_kick_;           // strength, < 0 none
   std::vector<bool> dribbler_;
+  std::vector<double> dribbler_since_;  // sim time of each handler's last on
+  int dribble_timeouts_ = 0;
   std::vector<double> opponent_cooldown_;      // s until an opponent may kick again
   State state_ = State::kStopped;
   std::array<int, 2> score_{0, 0};

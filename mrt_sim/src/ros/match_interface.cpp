@@ -98,6 +98,7 @@ void MatchInterface::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) co
   s.add("operator commands dropped", dropped_);
   s.add("kicks", match_.kicks());
   s.add("ball holder (robot index, -1 none)", match_.holder());
+  s.add("ball handlers off by their watchdog (~dribble_timeout)", match_.dribble_timeouts());
 }
 
 }  // namespace mrt::sim::node

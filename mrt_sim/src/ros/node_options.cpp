@@ -51,6 +51,7 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get_positive("path_rate", o.path_rate)
       .get_non_negative("path_length", o.path_length)
       .get_non_negative("cmd_timeout", o.cmd_timeout)  // 0 disables the watchdog
+      .get_non_negative("dribble_timeout", o.dribble_timeout)  // 0: the ball handler stays on until told
       .get("world_frame", o.world_frame)
       .get("frame_prefix", o.frame_prefix)
       .get("sensor_parent", o.sensor_parent)

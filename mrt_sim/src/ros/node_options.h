@@ -24,6 +24,7 @@ struct NodeOptions {
   double path_rate = 10.0;             // ~path_rate: Hz of ground_truth_path updates
   int path_length = 1000;              // ~path_length: poses kept in the trail
   double cmd_timeout = 0.5;            // ~cmd_timeout: sim seconds; 0 disables the watchdog
+  double dribble_timeout = 0.5;        // ~dribble_timeout: sim seconds a `dribble` true holds; 0: until false
   std::string world_frame = "world";   // ~world_frame
   std::string frame_prefix;            // ~frame_prefix: prepended to every robot frame
   std::string sensor_parent = "base_link_truth";  // ~sensor_parent: parent of sensor frames
