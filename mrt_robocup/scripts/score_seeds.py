@@ -104,7 +104,8 @@ def main():
         quoteattr(verdict), escape("\n".join(lines + logs)))
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     with open(args.out, "w") as f:
-        f.write('<testsuite name="robocup_score_seeds" tests="1" failures="%d">'
+        # catkin's run_tests.py reads tests, errors and failures.
+        f.write('<testsuite name="robocup_score_seeds" tests="1" errors="0" failures="%d">'
                 '<testcase classname="mrt_robocup.score_seeds" name=%s>%s<system-out>%s</system-out>'
                 '</testcase></testsuite>\n' % (0 if passed else 1, quoteattr(name), failure,
                                                 escape("\n".join(lines + [verdict]))))
