@@ -142,6 +142,16 @@ TEST(Player, RefereeStopHaltsWhateverTheRules) {
   EXPECT_TRUE(p.cycle(in).halted);
 }
 
+// The robot at (6, 0.85) facing +x, the ball at its kicker (6.36, 0.85)
+// and held (the kicker sensor says so).
+PlayerInput ball_held_at_shot() {
+  PlayerInput in = ball_ahead(6.36, 0.85);
+  in.pose = Pose2D(6.0, 0.85, 0.0);
+  in.possession_known = true;
+  in.possession = true;
+  return in;
+}
+
 // Ball held (kicker sensor) at (6, 0.85) facing +x, nobody around: the aim
 // is (9, 0.85) (aim_offset 0.85 m, robot on the +y side), 3 m away:
 // SHOOTING 1 (below 3000 mm), NARROW 1, ShotClear -> KickToGoal: Kick HARD
@@ -149,10 +159,7 @@ TEST(Player, RefereeStopHaltsWhateverTheRules) {
 TEST(Player, KicksWhenTheShotIsClear) {
   for (const char* k : {"differential", "omni"}) {
     Player p(options(k));
-    PlayerInput in = ball_ahead(6.36, 0.85);
-    in.pose = Pose2D(6.0, 0.85, 0.0);
-    in.possession_known = true;
-    in.possession = true;
+    PlayerInput in = ball_held_at_shot();
     const PlayerOutput out = p.cycle(in);
     EXPECT_TRUE(out.kick) << k;
     EXPECT_DOUBLE_EQ(out.kick_strength, 1.0) << k;
@@ -169,10 +176,7 @@ TEST(Player, KicksWhenTheShotIsClear) {
 // the robot settles instead of swinging through the aim.
 TEST(Player, NoKickWhileTurning) {
   Player p(options("differential"));
-  PlayerInput in = ball_ahead(6.36, 0.85);
-  in.pose = Pose2D(6.0, 0.85, 0.0);
-  in.possession_known = true;
-  in.possession = true;
+  PlayerInput in = ball_held_at_shot();
   for (double w : {0.5, -0.5, 0.11}) {
     in.omega = w;
     const PlayerOutput out = p.cycle(in);
@@ -192,10 +196,7 @@ TEST(Player, NoKickWhileTurning) {
 // An opponent on the shot line: no kick.
 TEST(Player, NoKickWhenBlocked) {
   Player p(options("differential"));
-  PlayerInput in = ball_ahead(6.36, 0.85);
-  in.pose = Pose2D(6.0, 0.85, 0.0);
-  in.possession_known = true;
-  in.possession = true;
+  PlayerInput in = ball_held_at_shot();
   in.anchors.push_back({"Opponent", 7.5, 0.85, 0, 0, 1.0});
   EXPECT_FALSE(p.cycle(in).kick);
 }

@@ -26,6 +26,17 @@ Point2D mouth(const Goal& g) { return {g.pose.x, g.pose.y}; }
 Point2D into(const Goal& g) { return {std::cos(g.pose.theta), std::sin(g.pose.theta)}; }
 Point2D across(const Goal& g) { return {-std::sin(g.pose.theta), std::cos(g.pose.theta)}; }
 
+// The field's frame: the centre between the goal mouths, the axis towards
+// the other goal, the normal to the left of it, half the mouths' distance.
+struct FieldFrame {
+  Point2D centre, axis, normal;
+  double half_length;
+};
+FieldFrame field_frame(const Goal& own, const Goal& other) {
+  const Point2D c0 = mouth(own), c1 = mouth(other), axis = unit(sub(c1, c0));
+  return {add(c0, sub(c1, c0), 0.5), axis, {-axis.y, axis.x}, dist(c0, c1) / 2};
+}
+
 const Goal& find_goal(const World& w, const std::string& name) {
   for (const Goal& g : w.goals)
     if (g.name == name) return g;
@@ -290,12 +301,11 @@ Point2D Match::free_spot(const Point2D& p) const {
   };
   if (free(p)) return p;
   // On the field (lines included): within the touch lines and goal lines.
-  const Point2D c0 = mouth(own_goal_), c1 = mouth(other_goal_), axis = unit(sub(c1, c0));
-  const Point2D centre = add(c0, sub(c1, c0), 0.5), normal{-axis.y, axis.x};
-  const double half_length = dist(c0, c1) / 2;
+  const FieldFrame f = field_frame(own_goal_, other_goal_);
   auto on_field = [&](const Point2D& q) {
-    const Point2D d = sub(q, centre);
-    return std::abs(dot(d, axis)) <= half_length + 1e-9 && std::abs(dot(d, normal)) <= cfg_.field_half_width + 1e-9;
+    const Point2D d = sub(q, f.centre);
+    return std::abs(dot(d, f.axis)) <= f.half_length + 1e-9 &&
+           std::abs(dot(d, f.normal)) <= cfg_.field_half_width + 1e-9;
   };
   // The nearest free point: rings 5 cm apart, 32 directions each.
   constexpr int kDirections = 32;
@@ -393,8 +403,7 @@ void Match::referee() {
     if (std::abs(lateral) < g.width / 2) {
       ++score_[static_cast<std::size_t>(attacker)];
       emit(RefereeCommand::kGoal, attacker, b.position, "goal for " + cfg_.teams[static_cast<std::size_t>(attacker)]);
-      const Point2D centre = add(mouth(own_goal_), sub(mouth(other_goal_), mouth(own_goal_)), 0.5);
-      stoppage(RefereeCommand::kKickOff, defender, centre, "goal");
+      stoppage(RefereeCommand::kKickOff, defender, field_frame(own_goal_, other_goal_).centre, "goal");
       return;
     }
     const double side = lateral > 0 ? 1.0 : -1.0;
@@ -409,8 +418,8 @@ void Match::referee() {
     return;
   }
   // Over a touch line: throw-in for the team that did not touch it last.
-  const Point2D c0 = mouth(own_goal_), axis = unit(sub(mouth(other_goal_), c0));
-  const Point2D centre = add(c0, sub(mouth(other_goal_), c0), 0.5), normal{-axis.y, axis.x};
+  const FieldFrame f = field_frame(own_goal_, other_goal_);
+  const Point2D centre = f.centre, axis = f.axis, normal = f.normal;
   const double along = dot(sub(b.position, centre), axis), lateral = dot(sub(b.position, centre), normal);
   if (std::abs(lateral) > cfg_.field_half_width + b.radius) {
     const Point2D p = add(add(centre, axis, along), normal, lateral > 0 ? cfg_.field_half_width : -cfg_.field_half_width);
