@@ -46,6 +46,7 @@ class TeamWatch {
       subs_.push_back(nh_.subscribe<mrt_msgs::CoordinationParameters>(
           "/" + r + "/scare/team", 50, [this, r](const mrt_msgs::CoordinationParameters::ConstPtr& m) {
             if (m->robot_id == r) {  // its own: when it took its intention, on its own clock
+              own.push_back(m);
               auto& v = intentions[r];
               if (v.empty() || v.back().second != m->intention) v.push_back({m->intention_since, m->intention});
               return;
@@ -82,6 +83,8 @@ class TeamWatch {
   /// Each robot's intentions as it announced them: (taken at, slot), its
   /// coordinator's sim time of the cycle that took it (0: not carried).
   std::map<std::string, std::vector<std::pair<double, std::string>>> intentions;
+  /// Every robot's own coordination messages, in arrival order (for a failure's timeline).
+  std::vector<mrt_msgs::CoordinationParameters::ConstPtr> own;
 
  private:
   ros::NodeHandle nh_;

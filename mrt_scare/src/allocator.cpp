@@ -22,7 +22,8 @@ double Allocator::fit(const RobotView& r, int s) const {
 double Allocator::utility(const TeamInput& in, const RobotView& r, int s) const {
   const ActivitySpec& a = set_.activities[static_cast<std::size_t>(slots_[static_cast<std::size_t>(s)].activity)];
   const double opp = in.opportunity[static_cast<std::size_t>(slots_[static_cast<std::size_t>(s)].activity)];
-  return a.priority * opp * fit(r, s) + (r.incumbent == s ? set_.options.hysteresis : 0.0);
+  const bool kept = r.incumbent == s || std::find(in.vacated.begin(), in.vacated.end(), s) != in.vacated.end();
+  return a.priority * opp * fit(r, s) + (kept ? set_.options.hysteresis : 0.0);
 }
 
 bool Allocator::dwelling(const RobotView& r) const {

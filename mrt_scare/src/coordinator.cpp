@@ -65,6 +65,8 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
     if (now < it->second) m.attitude[static_cast<std::size_t>(it->first)] = 0.0;
     it = now < it->second ? std::next(it) : handed_back_.erase(it);
   }
+  const auto own = team_.find(self_.id);
+  if (own != team_.end()) update_rate(own->second, m);
   team_[self_.id] = m;
   return m;
 }
@@ -72,8 +74,12 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
 bool Coordinator::receive(const CoordinationMessage& m) {
   if (m.robot_id.empty() || m.robot_id == self_.id) return m.robot_id == self_.id;
   if (m.leaving) {
-    drops_ += team_.erase(m.robot_id);
-    heard_.erase(m.robot_id);
+    const auto held = team_.find(m.robot_id);
+    if (held != team_.end()) {
+      ++drops_;
+      if (held->second.intention >= 0) vacated_.push_back(held->second.intention);
+    }
+    forget(m.robot_id);
     return true;
   }
   const auto n = slots_.size();
@@ -85,11 +91,29 @@ bool Coordinator::receive(const CoordinationMessage& m) {
   for (std::size_t i = 0; ok && i < m.opportunity.size(); ++i) ok = m.opportunity[i] >= 0.0 && m.opportunity[i] <= 1.0;
   if (!ok) return false;
   const auto it = team_.find(m.robot_id);
-  if (it == team_.end() || m.seq > it->second.seq || m.stamp > it->second.stamp) team_[m.robot_id] = m;
+  if (it == team_.end() || m.seq > it->second.seq || m.stamp > it->second.stamp) {
+    if (it != team_.end()) update_rate(it->second, m);
+    team_[m.robot_id] = m;
+  }
   // Gossip only delays the drop of a teammate still held (never re-adds one).
   for (const auto& [id, stamp] : m.heard)
     if (id != self_.id && std::isfinite(stamp) && team_.count(id) && stamp > heard_[id]) heard_[id] = stamp;
   return true;
+}
+
+void Coordinator::update_rate(const CoordinationMessage& before, const CoordinationMessage& m) {
+  std::vector<double>& rate = time_rate_[m.robot_id];
+  rate.assign(m.time.size(), 0.0);
+  const double dt = m.stamp - before.stamp;
+  for (std::size_t i = 0; dt > 0.0 && i < m.time.size() && i < before.time.size(); ++i)
+    if (std::isfinite(m.time[i]) && std::isfinite(before.time[i]))
+      rate[i] = std::clamp((m.time[i] - before.time[i]) / dt, -options_.max_time_rate, options_.max_time_rate);
+}
+
+void Coordinator::forget(const std::string& id) {
+  team_.erase(id);
+  heard_.erase(id);
+  time_rate_.erase(id);
 }
 
 double Coordinator::newest(const std::string& id, const CoordinationMessage& m) const {
@@ -105,6 +129,14 @@ TeamInput Coordinator::team_input(double now) const {
     v.id = id;
     v.attitude = m.attitude;
     v.time = m.time;
+    // Every message is brought to now (a teammate's is at least one cycle
+    // old), its times with their rate over the sender's last two messages,
+    // so that two robots moving the same way do not each see the other
+    // nearer than it is.
+    const auto rate = time_rate_.find(id);
+    const double ahead = std::min(std::max(0.0, now - m.stamp), options_.grace);
+    if (rate != time_rate_.end())
+      for (std::size_t i = 0; i < v.time.size(); ++i) v.time[i] = std::max(0.0, v.time[i] + rate->second[i] * ahead);
     v.incumbent = m.intention;
     v.held = m.held + std::max(0.0, now - m.stamp);  // inf stays inf
     v.confidence = id == self_.id ? 1.0 : confidence(std::max(0.0, now - m.stamp));
@@ -117,22 +149,29 @@ TeamInput Coordinator::team_input(double now) const {
 }
 
 Allocation Coordinator::step(double now) {
-  const std::size_t drops_before = drops_;
   for (auto it = team_.begin(); it != team_.end();) {
     // Dropped when neither this robot nor, by their gossip, its teammates
     // have heard it for drop_timeout: survivors whose own copy of its last
     // message was lost drop it with the others, not a cycle earlier.
     if (it->first != self_.id && now - newest(it->first, it->second) > options_.drop_timeout) {
-      heard_.erase(it->first);
-      it = team_.erase(it);
+      if (it->second.intention >= 0) vacated_.push_back(it->second.intention);
+      const std::string id = (it++)->first;
+      forget(id);
       ++drops_;
     } else {
       ++it;
     }
   }
   TeamInput in = team_input(now);
-  if (drops_ != drops_before)
+  // A drop-out is re-assigned at once: in that cycle nobody's dwell holds,
+  // and its slot carries the hysteresis its holder had (the survivors' own
+  // hysteresis alone could outweigh filling it, and leave a free ball to
+  // nobody).
+  in.vacated = std::move(vacated_);
+  vacated_.clear();
+  if (drops_ != drops_seen_)
     for (RobotView& v : in.robots) v.held = std::numeric_limits<double>::infinity();
+  drops_seen_ = drops_;
   last_ = allocator_.allocate(std::move(in));
   int want = -1;
   for (std::size_t i = 0; i < last_.robots.size(); ++i)

@@ -30,6 +30,10 @@ struct RobotView {
 struct TeamInput {
   std::vector<double> opportunity;
   std::vector<RobotView> robots;
+  /// Slots whose holder has just dropped out: whoever takes one earns the
+  /// hysteresis its holder had, so that the survivors' own hysteresis does
+  /// not keep it vacant.
+  std::vector<int> vacated;
 };
 
 struct AgendaEntry {
@@ -61,7 +65,8 @@ class Allocator {
   /// The fit of robot r for slot s: confidence * attitude / (1 + time / time_scale).
   double fit(const RobotView& r, int s) const;
   /// Utility of robot r (sorted index) in slot s given the agenda's
-  /// opportunities, with the incumbent's hysteresis bonus; no tie-break term.
+  /// opportunities, with the incumbent's (or a vacated slot's) hysteresis
+  /// bonus; no tie-break term.
   double utility(const TeamInput& in, const RobotView& r, int s) const;
   /// Robot r is within its dwell: it holds a slot taken less than
   /// options.dwell ago.

@@ -65,6 +65,10 @@ struct CoordinatorOptions {
   double min_confidence = 0.5;  // confidence just before the drop
   double listen = 0.5;          // s a (re)starting robot only listens before taking a slot
   double hand_back_penalty = 5.0;  // s a slot handed back by the sequencer is published with attitude 0
+  /// A teammate's times to reach are brought to the allocation's time (up
+  /// to `grace` ahead) with their rate over its last two messages, at most
+  /// this many s per s either way (a target that jumps); 0: not at all.
+  double max_time_rate = 5.0;
 };
 
 /// The age penalty: 1 up to `grace`, then linear down to `min_confidence`
@@ -93,8 +97,9 @@ class Coordinator {
   /// Drops teammates silent for drop_timeout, allocates, and adopts its own
   /// slot, unless teammates still claim it (release before acquire: then it
   /// holds none, waiting(), until they announce they left it). In a cycle
-  /// in which it drops a teammate, nobody's dwell holds (a drop-out is
-  /// re-assigned at once).
+  /// in which it drops a teammate, nobody's dwell holds and the slot
+  /// the teammate held carries its hysteresis (a drop-out is re-assigned at
+  /// once).
   Allocation step(double now);
   /// The sequencer handed the job `slot` back (a task's `hand_back`): this
   /// robot leaves it at once (intention none) and publishes attitude 0 for
@@ -137,8 +142,13 @@ class Coordinator {
   bool waiting_ = false;
   double started_ = -1.0;  // time of the first publish
   std::size_t drops_ = 0;
+  std::size_t drops_seen_ = 0;  // drops_ at the last step
+  std::vector<int> vacated_;    // slots of teammates dropped since the last step
   std::map<int, double> handed_back_;  // slot -> end of its penalty
   std::map<std::string, double> heard_;  // teammate -> newest stamp known through gossip
+  std::map<std::string, std::vector<double>> time_rate_;  // robot -> per slot, d time / d stamp
+  void update_rate(const CoordinationMessage& before, const CoordinationMessage& m);
+  void forget(const std::string& id);
   double newest(const std::string& id, const CoordinationMessage& m) const;
   Allocation last_;
 };

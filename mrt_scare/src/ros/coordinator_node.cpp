@@ -1,8 +1,10 @@
 // scare_coordinator: SCARE's coordination sub-module on one robot (wiring
 // only; the protocol and the allocation are mrt_scare's Coordinator). Every
-// 1 / ~rate s it publishes its parameters and intention on the team topic,
-// allocates the team from what it heard, and publishes its job (to the
-// sequencer) and the coordination crisp data (to Mr. BRIAN / MAP).
+// 1 / ~rate s it allocates the team from the last messages of every robot
+// (its own included, so that teammates on the same clock compute from the
+// same numbers), publishes its parameters and intention on the team topic,
+// and its job (to the sequencer) and the coordination crisp data (to
+// Mr. BRIAN / MAP).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
@@ -36,7 +38,7 @@ struct CoordinatorNodeOptions {
   double rate = 10.0;               // ~rate, Hz
   std::string frame = "world";      // ~frame of the poses and targets
   std::string team_topic = "/scare/team";
-  CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence, ~listen
+  CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence, ~listen, ~max_time_rate
   std::string cost = "straight_line";  // ~cost: straight_line | planner
   std::string plan_service = "make_plan";  // ~plan_service (nav_msgs/GetPlan, SPIKE's)
   PlannerCostOptions planner;       // ~plan_resolution, ~plan_max_age
@@ -53,6 +55,7 @@ struct CoordinatorNodeOptions {
         .get_positive("min_confidence", o.coordination.min_confidence)
         .get_non_negative("listen", o.coordination.listen)
         .get_non_negative("hand_back_penalty", o.coordination.hand_back_penalty)
+        .get_non_negative("max_time_rate", o.coordination.max_time_rate)
         .get("cost", o.cost)
         .get("plan_service", o.plan_service)
         .get_positive("plan_resolution", o.planner.resolution)
@@ -209,6 +212,7 @@ class CoordinatorNode {
     if (!enabled_ || !pose_) return;
     const ros::Time now = ros::Time::now();
     if (planner_) planner_->set_time(now.toSec());
+    coord_.step(now.toSec());
     const CoordinationMessage c = coord_.publish(now.toSec(), *pose_, world_);
     mrt_msgs::CoordinationParameters m;
     m.header.stamp = now;
@@ -229,7 +233,6 @@ class CoordinatorNode {
       m.heard_stamps.push_back(stamp);
     }
     team_pub_.publish(m);
-    coord_.step(now.toSec());
     publish_outputs(now);
     diag_.update();
   }
