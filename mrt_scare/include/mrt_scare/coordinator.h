@@ -65,9 +65,10 @@ struct CoordinatorOptions {
   double min_confidence = 0.5;  // confidence just before the drop
   double listen = 0.5;          // s a (re)starting robot only listens before taking a slot
   double hand_back_penalty = 5.0;  // s a slot handed back by the sequencer is published with attitude 0
-  /// A teammate's times to reach are brought to the allocation's time (up
-  /// to `grace` ahead) with their rate over its last two messages, at most
-  /// this many s per s either way (a target that jumps); 0: not at all.
+  /// Every robot's times to reach (its own message's too) are brought to
+  /// the allocation's time (up to `grace` ahead) with their rate over its
+  /// last two messages, at most this many s per s either way (a target that
+  /// jumps); 0: not at all.
   double max_time_rate = 5.0;
 };
 
