@@ -154,6 +154,52 @@ bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, 
   return !cycles.empty();
 }
 
+// The robot (not gone) alone on a ball job it has held for 3 s, at least
+// 8 s into play; false while there is none, or a robot has no job.
+bool pick_victim(TeamWatch& team, const std::set<std::string>& gone, double start, std::string* victim,
+                 std::string* slot) {
+  const double now = ros::Time::now().toSec();
+  if (now < start + 8.0) return false;
+  std::map<std::string, int> holders;
+  for (const auto& r : kRobots) {
+    if (gone.count(r)) continue;
+    auto it = team.job.find(r);
+    if (it == team.job.end() || it->second.empty()) return false;
+    ++holders[it->second];
+  }
+  for (const auto& r : kRobots) {
+    if (gone.count(r)) continue;
+    const std::string& j = team.job.at(r);
+    const auto& changes = team.job_changes[r];
+    const double since = changes.empty() ? 1e9 : changes.back().first;
+    if (holders[j] == 1 && kBallJobs.count(j) && now - since >= 3.0) {
+      *victim = r;
+      *slot = j;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Play continues: the heir executes the job (it travels at least 0.5 m in
+// the 20 s after taking it); the ball's travel is logged.
+void expect_play_continues(TeamWatch& team, const std::string& heir, const std::string& job) {
+  ASSERT_NE(team.latest(heir), nullptr);
+  ASSERT_FALSE(team.ball.empty());
+  const auto h0 = *team.latest(heir);
+  const auto b0 = team.ball.back();
+  wait_for([&] {
+    const auto& h = *team.latest(heir);
+    return std::hypot(h.x - h0.x, h.y - h0.y) >= 0.5 || h.t - h0.t > 20.0;
+  }, 60.0);
+  const auto& h = *team.latest(heir);
+  const auto& b = team.ball.back();
+  ROS_INFO("in the %.1f s after: %s travelled %.2f m, the ball %.2f m", h.t - h0.t, heir.c_str(),
+           std::hypot(h.x - h0.x, h.y - h0.y), std::hypot(b.x - b0.x, b.y - b0.y));
+  EXPECT_GE(std::hypot(h.x - h0.x, h.y - h0.y), 0.5) << heir << " did not move in the " << h.t - h0.t
+                                                     << " s after taking " << job;
+}
+
 TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
   TeamWatch team(kRobots);
   ASSERT_TRUE(wait_for([&] { return team.command("start") != nullptr; }, 90.0)) << "the match never started";
@@ -163,31 +209,7 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
   const double start = team.command("start")->header.stamp.toSec();
   std::set<std::string> gone;  // removed robots
   std::string victim, slot;
-  auto held_since = [&](const std::string& r) {
-    const auto& c = team.job_changes[r];
-    return c.empty() ? 1e9 : c.back().first;
-  };
-  auto pick = [&] {
-    const double now = ros::Time::now().toSec();
-    if (now < start + 8.0) return false;
-    std::map<std::string, int> holders;
-    for (const auto& r : kRobots) {
-      if (gone.count(r)) continue;
-      auto it = team.job.find(r);
-      if (it == team.job.end() || it->second.empty()) return false;
-      ++holders[it->second];
-    }
-    for (const auto& r : kRobots) {
-      if (gone.count(r)) continue;
-      const std::string& j = team.job.at(r);
-      if (holders[j] == 1 && kBallJobs.count(j) && now - held_since(r) >= 3.0) {
-        victim = r;
-        slot = j;
-        return true;
-      }
-    }
-    return false;
-  };
+  auto pick = [&] { return pick_victim(team, gone, start, &victim, &slot); };
   // Up to three removals: one whose ball jobs were no longer wanted at the
   // drop (ball out of play) says nothing, and the next survivor holding one
   // is removed instead.
@@ -237,22 +259,7 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
     if (taken - last <= kDropTimeout - kCycle) expect_held_after_drop(team, gone, taken_job, last);
   }
   ASSERT_FALSE(heir.empty()) << "three removals, and at none of the drops was a ball job still opportune";
-  // Play continues: the heir executes the job (it travels at least 0.5 m
-  // in the 20 s after taking it); the ball's travel is logged.
-  ASSERT_NE(team.latest(heir), nullptr);
-  ASSERT_FALSE(team.ball.empty());
-  const auto h0 = *team.latest(heir);
-  const auto b0 = team.ball.back();
-  wait_for([&] {
-    const auto& h = *team.latest(heir);
-    return std::hypot(h.x - h0.x, h.y - h0.y) >= 0.5 || h.t - h0.t > 20.0;
-  }, 60.0);
-  const auto& h = *team.latest(heir);
-  const auto& b = team.ball.back();
-  ROS_INFO("in the %.1f s after: %s travelled %.2f m, the ball %.2f m", h.t - h0.t, heir.c_str(),
-           std::hypot(h.x - h0.x, h.y - h0.y), std::hypot(b.x - b0.x, b.y - b0.y));
-  EXPECT_GE(std::hypot(h.x - h0.x, h.y - h0.y), 0.5) << heir << " did not move in the " << h.t - h0.t
-                                                     << " s after taking " << taken_job;
+  expect_play_continues(team, heir, taken_job);
 }
 
 }  // namespace

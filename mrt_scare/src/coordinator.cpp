@@ -203,6 +203,13 @@ bool Coordinator::hand_back(const std::string& slot, double now) {
   if (s < 0) return false;
   handed_back_[s] = now + options_.hand_back_penalty;
   if (own_slot_ == s) own_slot_ = -1;
+  // The next step allocates on its own last message: as if it had already
+  // said so (attitude 0, not its intention), else it would take it back.
+  const auto own = team_.find(self_.id);
+  if (own != team_.end() && static_cast<std::size_t>(s) < own->second.attitude.size()) {
+    own->second.attitude[static_cast<std::size_t>(s)] = 0.0;
+    if (own->second.intention == s) own->second.intention = -1;
+  }
   return true;
 }
 
