@@ -73,15 +73,14 @@ struct Game {
     if (d > 1e-9) p = Pose2D(p.x + dx / d * step, p.y + dy / d * step, 0);
   }
 
-  /// Robot r's cycle at time t, as scare_coordinator's: step (on the last
-  /// messages, its own included), publish, deliver with loss and delay.
+  /// Robot r's cycle at time t: publish, deliver with loss and delay, step.
   void cycle(int r, double t) {
     const CrispMap w = world(t);
     const Pose2D& p = pose[static_cast<std::size_t>(r)];
-    c[static_cast<std::size_t>(r)].step(t);
     const CoordinationMessage m = c[static_cast<std::size_t>(r)].publish(t, Pose2D(p.x + noise(rng), p.y + noise(rng), 0), w);
     for (int j = 0; j < 5; ++j)
       if (j != r && uni(rng) >= 0.2) queue.push_back({t + 0.1 * uni(rng), j, m});
+    c[static_cast<std::size_t>(r)].step(t);
     // A re-assignment: the robot takes a slot other than the last one it
     // held, directly or after waiting (release before acquire) in between.
     const int after = c[static_cast<std::size_t>(r)].own_slot();

@@ -65,8 +65,6 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
     if (now < it->second) m.attitude[static_cast<std::size_t>(it->first)] = 0.0;
     it = now < it->second ? std::next(it) : handed_back_.erase(it);
   }
-  const auto own = team_.find(self_.id);
-  if (own != team_.end()) update_rate(own->second, m);
   team_[self_.id] = m;
   return m;
 }
@@ -129,10 +127,10 @@ TeamInput Coordinator::team_input(double now) const {
     v.id = id;
     v.attitude = m.attitude;
     v.time = m.time;
-    // Every message is brought to now (a teammate's is at least one cycle
-    // old), its times with their rate over the sender's last two messages,
-    // so that two robots moving the same way do not each see the other
-    // nearer than it is.
+    // A teammate's message is at least one cycle old (this robot's own is
+    // of now): its times are brought to now with their rate over the
+    // sender's last two messages, so that two robots moving the same way do
+    // not each see the other nearer than it is.
     const auto rate = time_rate_.find(id);
     const double ahead = std::min(std::max(0.0, now - m.stamp), options_.grace);
     if (rate != time_rate_.end())
@@ -203,13 +201,6 @@ bool Coordinator::hand_back(const std::string& slot, double now) {
   if (s < 0) return false;
   handed_back_[s] = now + options_.hand_back_penalty;
   if (own_slot_ == s) own_slot_ = -1;
-  // The next step allocates on its own last message: as if it had already
-  // said so (attitude 0, not its intention), else it would take it back.
-  const auto own = team_.find(self_.id);
-  if (own != team_.end() && static_cast<std::size_t>(s) < own->second.attitude.size()) {
-    own->second.attitude[static_cast<std::size_t>(s)] = 0.0;
-    if (own->second.intention == s) own->second.intention = -1;
-  }
   return true;
 }
 

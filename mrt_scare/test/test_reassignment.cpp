@@ -1,9 +1,10 @@
 // A slot left vacant is filled: a silent teammate's slot in the cycle it
 // is dropped, though the survivors' hysteresis favours staying put; and
 // two robots moving the same way do not leave a slot to each other because
-// each holds a message of its own newer than the other's (cycles out of
-// phase): every robot's times to reach are brought to the allocation's time
-// with the rate of its last two messages.
+// each holds a message of its own newer than the other's (it publishes,
+// steps, and hears this cycle's after its step): teammates' times to reach
+// are brought to the allocation's time with the rate of their last two
+// messages.
 #include <gtest/gtest.h>
 
 #include "mrt_scare/coordinator.h"
@@ -25,9 +26,9 @@ default_attitude: 1.0
 options: {time_scale: 2.0, hysteresis: 0.15, min_opportunity: 0.05}
 )Y";
 
-/// Two robots on 0.125 s cycles (exact in binary), each stepping on its
-/// own message of this cycle and the other's of the last one (the worst
-/// case of cycles out of phase: each is the later one in its own view).
+/// Two robots on 0.125 s cycles (exact in binary), in the order of the
+/// real nodes: each sends, steps on what it has heard so far, and this
+/// cycle's messages arrive after the step.
 struct Pipeline {
   std::vector<Coordinator> c;
   std::vector<CoordinationMessage> in_flight;

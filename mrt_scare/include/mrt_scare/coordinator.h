@@ -65,10 +65,9 @@ struct CoordinatorOptions {
   double min_confidence = 0.5;  // confidence just before the drop
   double listen = 0.5;          // s a (re)starting robot only listens before taking a slot
   double hand_back_penalty = 5.0;  // s a slot handed back by the sequencer is published with attitude 0
-  /// Every robot's times to reach (its own message's too) are brought to
-  /// the allocation's time (up to `grace` ahead) with their rate over its
-  /// last two messages, at most this many s per s either way (a target that
-  /// jumps); 0: not at all.
+  /// A teammate's times to reach are brought to the allocation's time (up
+  /// to `grace` ahead) with their rate over its last two messages, at most
+  /// this many s per s either way (a target that jumps); 0: not at all.
   double max_time_rate = 5.0;
 };
 
@@ -147,7 +146,7 @@ class Coordinator {
   std::vector<int> vacated_;    // slots of teammates dropped since the last step
   std::map<int, double> handed_back_;  // slot -> end of its penalty
   std::map<std::string, double> heard_;  // teammate -> newest stamp known through gossip
-  std::map<std::string, std::vector<double>> time_rate_;  // robot -> per slot, d time / d stamp
+  std::map<std::string, std::vector<double>> time_rate_;  // teammate -> per slot, d time / d stamp
   void update_rate(const CoordinationMessage& before, const CoordinationMessage& m);
   void forget(const std::string& id);
   double newest(const std::string& id, const CoordinationMessage& m) const;

@@ -1,10 +1,8 @@
 // scare_coordinator: SCARE's coordination sub-module on one robot (wiring
 // only; the protocol and the allocation are mrt_scare's Coordinator). Every
-// 1 / ~rate s it allocates the team from the last messages of every robot
-// (its own included, so that teammates on the same clock compute from the
-// same numbers), publishes its parameters and intention on the team topic,
-// and its job (to the sequencer) and the coordination crisp data (to
-// Mr. BRIAN / MAP).
+// 1 / ~rate s it publishes its parameters and intention on the team topic,
+// allocates the team from what it heard, and publishes its job (to the
+// sequencer) and the coordination crisp data (to Mr. BRIAN / MAP).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
@@ -212,7 +210,6 @@ class CoordinatorNode {
     if (!enabled_ || !pose_) return;
     const ros::Time now = ros::Time::now();
     if (planner_) planner_->set_time(now.toSec());
-    coord_.step(now.toSec());
     const CoordinationMessage c = coord_.publish(now.toSec(), *pose_, world_);
     mrt_msgs::CoordinationParameters m;
     m.header.stamp = now;
@@ -233,6 +230,7 @@ class CoordinatorNode {
       m.heard_stamps.push_back(stamp);
     }
     team_pub_.publish(m);
+    coord_.step(now.toSec());
     publish_outputs(now);
     diag_.update();
   }
