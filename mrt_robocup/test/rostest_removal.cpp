@@ -42,6 +42,7 @@ namespace {
 
 const std::vector<std::string> kRobots{"robot1", "robot2", "robot3", "robot4"};
 constexpr double kDropTimeout = 1.0, kCycle = 0.1, kTransport = 0.1;
+constexpr double kMinOpportunity = 0.05;  // robocup_team.yaml's min_opportunity
 // The ball jobs: opportune as long as the ball stays free or ours, so the
 // slot is still wanted when its holder is dropped (Defense, Blocking, ...
 // follow the ball's half and may rightly go unfilled for a while: seen, a
@@ -67,15 +68,19 @@ bool shutdown_node(const std::string& name) {
 // A job taken over by play before the drop (the allocation moved it on its
 // merits; seen once in 5 quiet runs) must still be a survivor's once the
 // silent robot is dropped, not left vacant.
+// The first survivor holding a ball job, "" none.
+std::string ball_job_holder(const TeamWatch& team, const std::set<std::string>& gone) {
+  for (const auto& r : kRobots)
+    if (!gone.count(r) && team.job.count(r) && kBallJobs.count(team.job.at(r))) return r;
+  return "";
+}
+
 void expect_held_after_drop(const TeamWatch& team, const std::set<std::string>& gone, const std::string& slot,
                             double last) {
   ROS_INFO("%s was taken over by play before the drop; checking it is still held after the drop", slot.c_str());
   const double after_drop = last + kDropTimeout + kCycle + kTransport;
   wait_for([&] { return ros::Time::now().toSec() >= after_drop; }, 30.0);
-  bool held = false;
-  for (const auto& r : kRobots)
-    if (!gone.count(r) && team.job.count(r) && kBallJobs.count(team.job.at(r))) held = true;
-  EXPECT_TRUE(held) << "no ball job held after the removed robot was dropped (" << slot << " taken by play before)";
+  EXPECT_FALSE(ball_job_holder(team, gone).empty()) << "no ball job held after the removed robot was dropped (" << slot << " taken by play before)";
 }
 
 // When the heir's coordinator took the slot, on its own clock (announced in
@@ -142,15 +147,14 @@ bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, 
     if (t < from || t > to || gone.count(m->robot_id)) continue;
     double o = 0.0;
     for (std::size_t a = 0; a < m->activities.size() && a < m->opportunity.size(); ++a)
-      if (m->activities[a] == "RecoverWanderingBall" || m->activities[a] == "BringBall" ||
-          m->activities[a] == "PassageToMate")
-        o = std::max(o, m->opportunity[a]);
+      for (const auto& job : kBallJobs)  // a job's activity: its slot name up to the role
+        if (job.substr(0, job.find('.')) == m->activities[a]) o = std::max(o, m->opportunity[a]);
     auto& c = cycles[std::lround(t / kCycle)];
     c.first += o;
     ++c.second;
   }
   for (const auto& [k, c] : cycles)
-    if (c.first / c.second < 0.05) return false;
+    if (c.first / c.second < kMinOpportunity) return false;
   return !cycles.empty();
 }
 
@@ -237,12 +241,10 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
     // Play may have handed the ball over just before the removal (seen: a
     // survivor took BringBall 0.15 s before, the removed robot's
     // RecoverWanderingBall no longer wanted): that ball job counts.
-    for (const auto& r : kRobots)
-      if (heir.empty() && !gone.count(r) && team.job.count(r) && kBallJobs.count(team.job.at(r))) {
-        heir = r;
-        taken_job = team.job.at(r);
-        taken = team.job_changes[r].back().first;
-      }
+    if (heir.empty() && !(heir = ball_job_holder(team, gone)).empty()) {
+      taken_job = team.job.at(heir);
+      taken = team.job_changes[heir].back().first;
+    }
     if (heir.empty() && !ball_jobs_wanted(team, gone, last + kDropTimeout, drop_end)) {
       ROS_INFO("no ball job was opportune when %s was dropped (ball out of play or unseen): it says nothing",
                victim.c_str());
