@@ -42,14 +42,15 @@ struct Stats {
   double availability() const { return steps ? static_cast<double>(known) / static_cast<double>(steps) : NAN; }
 };
 
-// The ball anchor MAP would give Mr. BRIAN: the most reliable confirmed one
-// (or confirmed/coasting with `coasting`).
+// The ball anchor MAP would give Mr. BRIAN (config/robocup.yaml's BallDistance,
+// `select: best_supported`): the best supported confirmed one (or
+// confirmed/coasting with `coasting`).
 const Anchor* ball_anchor(const WorldModel& w, int ball_class, double now, bool coasting = false) {
   const Anchor* best = nullptr;
   for (const Anchor& a : w.tracker().anchors())
     if ((a.status == AnchorStatus::kConfirmed || (coasting && a.status == AnchorStatus::kCoasting)) &&
         w.model().is_a(a.class_index, ball_class) &&
-        (!best || w.tracker().reliability(a, now) > w.tracker().reliability(*best, now)))
+        (!best || w.tracker().support(a, now) > w.tracker().support(*best, now)))
       best = &a;
   return best;
 }
@@ -88,8 +89,8 @@ void score_ball(const WorldModel& w, int ball_class, double now, const BallTruth
   else ++diag->lost_far;
   if (a && t.near) diag->error(e, t.since_kick, t.nearest, t.observers);
   if (std::getenv("MAP_BENCH_BALLDBG") && a && t.near && e > 0.3)
-    std::printf("balldbg t=%.2f e=%.2f local=%d fresh=%d remotes=%zu truth=(%.2f,%.2f) est=(%.2f,%.2f) v=(%.2f,%.2f) kick=%.2f id=%u\n",
-                now, e, a->has_local, a->local_last_seen >= now, a->remote.size(), t.p.x(), t.p.y(), a->fused.x(0),
+    std::printf("balldbg obs=%d nearest=%.2f t=%.2f e=%.2f local=%d fresh=%d remotes=%zu truth=(%.2f,%.2f) est=(%.2f,%.2f) v=(%.2f,%.2f) kick=%.2f id=%u\n",
+                t.observers, t.nearest, now, e, a->has_local, a->local_last_seen >= now, a->remote.size(), t.p.x(), t.p.y(), a->fused.x(0),
                 a->fused.x(1), a->fused.x(2), a->fused.x(3), t.since_kick, a->id);
   if (a && t.near && a->has_local && a->local_last_seen >= now) {
     diag->local_fresh.add((a->local.x.head<2>() - t.p).norm());

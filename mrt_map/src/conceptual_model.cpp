@@ -200,7 +200,7 @@ class ModelLoader {
     TrackerOptions& t = m_.tracker_;
     r_.map(n, "tracker", {"gate", "merge_gate", "confirm_hits", "tentative_timeout", "coast_after", "drop_after",
                           "max_sigma", "reliability_tau", "coalesce_gate",
-                          "coalesce_after", "maneuver_radius", "reid_gate"});
+                          "coalesce_after", "maneuver_radius", "reid_gate", "source_confidence"});
     t.gate = r_.positive(n, "gate", t.gate);
     t.merge_gate = r_.positive(n, "merge_gate", t.merge_gate);
     if (n["confirm_hits"]) t.confirm_hits = static_cast<int>(r_.integer(n["confirm_hits"], "confirm_hits", 1, 1000));
@@ -214,6 +214,8 @@ class ModelLoader {
     t.coalesce_after = r_.non_negative(n, "coalesce_after", t.coalesce_after);
     t.maneuver_radius = r_.non_negative(n, "maneuver_radius", t.maneuver_radius);
     t.reid_gate = r_.non_negative(n, "reid_gate", t.reid_gate);
+    t.source_confidence = r_.positive(n, "source_confidence", t.source_confidence);
+    if (t.source_confidence > 1.0) r_.fail(n["source_confidence"], "expected a value in (0, 1] for 'source_confidence'");
   }
 
   void team(const YAML::Node& n) {
@@ -266,7 +268,8 @@ class ModelLoader {
       const std::string v = r_.string(s, "select");
       if (v == "nearest") c.select = CrispEntry::Select::kNearest;
       else if (v == "most_reliable") c.select = CrispEntry::Select::kMostReliable;
-      else r_.fail(s, "expected 'nearest' or 'most_reliable' for 'select', got '" + v + "'");
+      else if (v == "best_supported") c.select = CrispEntry::Select::kBestSupported;
+      else r_.fail(s, "expected 'nearest', 'most_reliable' or 'best_supported' for 'select', got '" + v + "'");
     }
   }
 

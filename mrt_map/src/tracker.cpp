@@ -430,6 +430,14 @@ double Tracker::reliability(const Anchor& a, double now) const {
   return a.degree * std::exp(-std::max(0.0, now - a.last_seen) / model_.tracker().reliability_tau);
 }
 
+double Tracker::support(const Anchor& a, double now) const {
+  const double c = model_.tracker().source_confidence, tau = model_.tracker().reliability_tau;
+  auto doubt = [&](double last_seen) { return 1.0 - c * std::exp(-std::max(0.0, now - last_seen) / tau); };
+  double none = a.has_local ? doubt(a.local_last_seen) : 1.0;  // no source is right
+  for (const auto& [robot, t] : a.remote) none *= doubt(t.last_seen);
+  return a.degree * (1.0 - none);
+}
+
 std::vector<RemoteTrack> Tracker::local_tracks(const std::string& robot) const {
   std::vector<RemoteTrack> out;
   for (const Anchor& a : anchors_) {

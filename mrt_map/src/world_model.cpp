@@ -111,7 +111,8 @@ std::vector<CrispDatum> WorldModel::crisp(double now) const {
       if (r < e.min_reliability || r <= 0.0) continue;
       const double key = e.select == CrispEntry::Select::kNearest
                              ? -std::hypot(a.fused.x(0) - pose_.x, a.fused.x(1) - pose_.y)
-                             : r;
+                         : e.select == CrispEntry::Select::kBestSupported ? tracker_.support(a, now)
+                                                                          : r;
       if (!best || key > best_key) {
         best = &a;
         best_key = key;

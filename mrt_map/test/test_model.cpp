@@ -65,6 +65,9 @@ TEST(ConceptualModel, ErrorsNameFileLineColumn) {
   expect_error("classes:\n  Ball: {}\ncrisp:\n  - {name: X, class: Cat, quantity: x}\n", 4, 22, "unknown class 'Cat'");
   expect_error("classes:\n  Ball: {colour: red}\n", 2, 10, "unknown key 'colour'");
   expect_error("classes:\n  Ball: {}\ntracker: {coast_after: 2, drop_after: 1}\n", 3, 0, "drop_after");
+  expect_error("classes:\n  Ball: {}\ntracker: {source_confidence: 1.5}\n", 3, 30, "in (0, 1] for 'source_confidence'");
+  expect_error("classes:\n  Ball: {}\ncrisp:\n  - {name: X, class: Ball, quantity: x, select: best}\n", 4, 49,
+               "expected 'nearest', 'most_reliable' or 'best_supported' for 'select', got 'best'");
   EXPECT_THROW(ConceptualModel::load("/nonexistent/model.yaml"), mrt::common::ParseError);
 }
 

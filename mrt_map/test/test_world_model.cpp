@@ -104,3 +104,47 @@ TEST(WorldModel, BallLostByOneRobotIsKeptByTheTeammate) {
   // loop's final t += 0.1): reliability = 1 (orange) * exp(-0.2 / 1).
   EXPECT_NEAR(r1.crisp(t)[0].reliability, std::exp(-0.2), 1e-9);
 }
+
+// An orange object only r1 sees (a shirt behind the goal) and the ball that
+// r1 and r2 both see, each seen by r1 in every frame: equally reliable, but
+// `best_supported` takes the ball the teammate reports too.
+TEST(WorldModel, BestSupportedPrefersWhatTeammatesReport) {
+  const std::string model = std::string(kModel) +
+                            "  - {name: MostReliableX, class: Ball, quantity: x, select: most_reliable}\n"
+                            "  - {name: BestSupportedX, class: Ball, quantity: x, select: best_supported}\n";
+  const ConceptualModel m = ConceptualModel::parse(model, "t.yaml");
+  WorldModel r1(m, {"r1", 0.5}), r2(m, {"r2", 0.5});
+  RobotPose p1, p2;
+  p2.x = 4;
+  double t = 0;
+  for (int k = 0; k < 5; ++k, t += 0.1) {
+    // The shirt first: its anchor gets the lower id, which wins a tie.
+    r1.add_percept({at("Ball", "orange", -1, 3), at("Ball", "orange", 2, 1)}, p1, t, t, "cam");
+    r2.add_percept({at("Ball", "orange", -2, 1)}, p2, t, t, "cam");  // world (2, 1)
+    r1.add_teammate_model("r2", r2.local_tracks(), t, &p2);
+    r1.update(t);
+    r2.update(t);
+  }
+  const double now = t - 0.1;
+  ASSERT_EQ(r1.tracker().anchors().size(), 2u);
+  const Anchor& shirt = r1.tracker().anchors()[0];
+  const Anchor& ball = r1.tracker().anchors()[1];
+  ASSERT_NEAR(ball.fused.x(0), 2.0, 0.05);
+  ASSERT_EQ(ball.remote.count("r2"), 1u);
+  // Own sightings now (c = 0.5 each); r2's track last seen one cycle ago
+  // (r1 reads r2's model before r2's update): 0.5 exp(-0.1).
+  EXPECT_NEAR(r1.tracker().support(shirt, now), 0.5, 1e-12);
+  EXPECT_NEAR(r1.tracker().support(ball, now), 1.0 - 0.5 * (1.0 - 0.5 * std::exp(-0.1)), 1e-9);  // 0.726209
+  const auto c = r1.crisp(now);
+  ASSERT_EQ(c.size(), 6u);
+  EXPECT_NEAR(c[4].value, -1.0, 0.05);  // most_reliable: a tie (1.0 each), the lower id
+  EXPECT_NEAR(c[5].value, 2.0, 0.05);   // best_supported: the ball
+  EXPECT_DOUBLE_EQ(c[5].reliability, 1.0);  // the reported reliability is still degree * exp(-age / tau)
+  // The teammate's report grows old: at 0.5 s without any sighting the
+  // ball's support is 1 - (1 - 0.5 e^-0.5)(1 - 0.5 e^-0.6), the shirt's 0.5 e^-0.5.
+  r1.update(now + 0.5);
+  const double later = now + 0.5;
+  EXPECT_NEAR(r1.tracker().support(r1.tracker().anchors()[0], later), 0.5 * std::exp(-0.5), 1e-9);
+  EXPECT_NEAR(r1.tracker().support(r1.tracker().anchors()[1], later),
+              1.0 - (1.0 - 0.5 * std::exp(-0.5)) * (1.0 - 0.5 * std::exp(-0.6)), 1e-9);
+}

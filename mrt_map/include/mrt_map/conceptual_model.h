@@ -76,6 +76,8 @@ struct TrackerOptions {
   double maneuver_radius = 0.5;  // m: an observation outside the gate but this close to the
                                 // only anchor near it is a manoeuvre (kick): velocity reset
   double coalesce_after = 0.5;   // s ... for this long are one object (not a crossing): joined
+  double source_confidence = 0.5;  // in (0, 1]: how surely one fresh sighting (own or a teammate's
+                                   // track) is of a real object (select: best_supported)
   double reid_gate = 0.0;        // chi-square: an observation (or a teammate's track) no anchor
                                  // takes, within this of a coasting anchor, re-identifies it
                                  // (nearest first) instead of creating a symbol; 0 = off
@@ -101,7 +103,7 @@ struct WorldBounds {
 /// of a class, or a coordination parameter written by SCARE.
 struct CrispEntry {
   enum class Quantity { kDistance, kBearing, kX, kY, kVx, kVy, kSpeed, kParameter };
-  enum class Select { kNearest, kMostReliable };
+  enum class Select { kNearest, kMostReliable, kBestSupported };
   std::string name;
   int class_index = -1;
   std::string parameter;

@@ -37,6 +37,12 @@ class Tracker {
   const std::vector<Anchor>& anchors() const { return anchors_; }
   /// reliability = degree * exp(-(now - last_seen) / tau).
   double reliability(const Anchor& a, double now) const;
+  /// How surely the anchor is a real object, by its independent sources:
+  /// degree * (1 - prod_i (1 - c * exp(-age_i / tau))) over the own filter
+  /// and each teammate's track linked this cycle (age_i: since that
+  /// source's last sighting; c = tracker.source_confidence). A clutter
+  /// track one camera feeds ranks below the ball three robots report.
+  double support(const Anchor& a, double now) const;
   /// Anchors the robot's own sensors confirm (confirm_hits own sightings,
   /// the last within coast_after), for the teammates: their local
   /// estimates only (so a teammate never gets its own data back).
