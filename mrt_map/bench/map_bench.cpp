@@ -172,7 +172,7 @@ long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, s
       if (std::getenv("MAP_BENCH_DEBUG")) {
         const Anchor* old = nullptr;
         for (const Anchor& a : w.tracker().anchors()) if (static_cast<long>(a.id) == last_id[o]) old = &a;
-        std::printf("switch opp %zu: %ld -> %u (new age %.2f s, %s)", o, last_id[o], best->id,
+        std::printf("switch t=%.2f opp %zu: %ld -> %u (new age %.2f s, %s)", w.tracker().now(), o, last_id[o], best->id,
                     w.tracker().now() - best->first_seen, matched_before ? "tracked" : "reacq");
         std::printf(" new: local=%d remotes=%zu", best->has_local, best->remote.size());
         int nc = 0, nco = 0, nt = 0;

@@ -22,8 +22,10 @@
 // Play continues: the robot that took the job moves (0.5 m or more) in
 // the 20 s after.
 // When no ball job was opportune any more at the drop (the ball went out of
-// play or out of sight in that second), the removal says nothing, and the
-// next survivor alone on a ball job is removed (three removals at most).
+// play in that second, or out of the survivors' sight with the removed
+// robot, its only observer), the removal says nothing, and the next
+// survivor alone on a ball job is removed (three removals at most). A
+// robot is removed only while the ball is in play (3 s after a restart).
 #include <gtest/gtest.h>
 #include <ros/network.h>
 #include <xmlrpcpp/XmlRpc.h>
@@ -136,15 +138,21 @@ void log_timeline(const TeamWatch& team, const std::string& victim, double from,
 }
 
 // Whether the ball jobs were still wanted when the silent robot was dropped:
-// in every cycle of the drop's window, the survivors' mean opportunity of
-// some ball job at least min_opportunity (0.05). The ball may go out of
-// play or out of sight in that second (seen: a goal kick 1.1 s after the
-// removal), and an unwanted slot is rightly not re-assigned.
-bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, double from, double to) {
+// in every cycle of the drop's window [from, to], the survivors' mean
+// opportunity of some ball job at least min_opportunity (0.05) and at least
+// half of what it was when the robot was last heard (`last`). The ball may
+// go out of play in that second (seen: a goal kick 1.1 s after the
+// removal), or out of the survivors' sight with the removed robot, its only
+// observer: its reliability, and so the opportunity, then decays as
+// exp(-age / 1 s) (seen: 0.87 at the removal, 0.29 at the drop, 0 a cycle
+// later). An unwanted slot is rightly not re-assigned.
+bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, double last, double from,
+                      double to) {
   std::map<long, std::pair<double, int>> cycles;  // cycle -> (sum of ball opportunity, messages)
+  const long first = std::lround(last / kCycle);
   for (const auto& m : team.own) {
     const double t = m->header.stamp.toSec();
-    if (t < from || t > to || gone.count(m->robot_id)) continue;
+    if ((t < from && std::lround(t / kCycle) != first) || t > to || gone.count(m->robot_id)) continue;
     double o = 0.0;
     for (std::size_t a = 0; a < m->activities.size() && a < m->opportunity.size(); ++a)
       for (const auto& job : kBallJobs)  // a job's activity: its slot name up to the role
@@ -153,9 +161,11 @@ bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, 
     c.first += o;
     ++c.second;
   }
+  const auto at_last = cycles.find(first);
+  const double floor = std::max(kMinOpportunity, at_last == cycles.end() ? 0.0 : 0.5 * at_last->second.first / at_last->second.second);
   for (const auto& [k, c] : cycles)
-    if (c.first / c.second < kMinOpportunity) return false;
-  return !cycles.empty();
+    if (k != first && c.first / c.second < floor) return false;
+  return cycles.size() > (at_last == cycles.end() ? 0u : 1u);
 }
 
 // The robot (not gone) alone on a ball job it has held for 3 s, at least
@@ -249,7 +259,7 @@ TEST(RoboCupTeam, RemovedRobotsJobIsReassignedWithinOneCycle) {
       taken_job = team.job.at(heir);
       taken = team.job_changes[heir].back().first;
     }
-    if (heir.empty() && !ball_jobs_wanted(team, gone, last + kDropTimeout, drop_end)) {
+    if (heir.empty() && !ball_jobs_wanted(team, gone, last, last + kDropTimeout, drop_end)) {
       ROS_INFO("no ball job was opportune when %s was dropped (ball out of play or unseen): it says nothing",
                victim.c_str());
       log_timeline(team, victim, last + kDropTimeout - kCycle, drop_end);
