@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <thread>
 #include <unistd.h>
@@ -82,8 +84,14 @@ TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
   uint8_t seq = 0;
   // Commands every 10 ms of wall time (20 ms of board time, within the
   // watchdog's 100 ms); returns the reply's ticks of motor 0 and the source
-  // time at its reception.
+  // time at its reception. `max_gap`: the longest source time between two
+  // commands sent (a starved test thread, e.g. under ASan at nice 19 beside
+  // the team rostests, can exceed the watchdog: seen once in CI).
+  double last_sent = -1.0, max_gap = 0.0;
   auto command = [&](double* when) {
+    const double sent = sim_time();
+    if (last_sent >= 0.0) max_gap = std::max(max_gap, sent - last_sent);
+    last_sent = sent;
     const auto f = encode_frame(make_set_speed(++seq, {5.0, 5.0}));
     port.write(f.data(), f.size());
     BoardState st;
@@ -106,7 +114,12 @@ TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
   t.join();
   const double expected = 5.0 * (end - start) * 8192.0 / (2.0 * M_PI);  // about 13038
   EXPECT_NEAR(last - first, expected, 0.01 * expected) << "over " << end - start << " s of source time";
-  EXPECT_EQ(emu.firmware().watchdog_trips(), 0u);
+  // No trip while every command came within 80 % of the watchdog's period.
+  if (max_gap < 0.8 * c.watchdog_ms / 1000.0)
+    EXPECT_EQ(emu.firmware().watchdog_trips(), 0u) << "longest gap between commands " << max_gap << " s";
+  else
+    std::printf("test thread starved: %.3f s of board time between two commands (watchdog %u ms), %u trips\n",
+                max_gap, c.watchdog_ms, emu.firmware().watchdog_trips());
 }
 
 TEST(PtyEmulator, CarriesBytesAtTheBaudRate) {
