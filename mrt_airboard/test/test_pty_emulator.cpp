@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <thread>
 #include <unistd.h>
 
@@ -101,9 +101,10 @@ TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
     return st.motors.empty() ? 0 : st.motors[0].ticks;
   };
   // One measurement: the wheel brought to speed (0.3 s of wall time, tau
-  // 20 ms), then its ticks over 2 s of source time; max_gap over both. Repeated (3 times at
-  // most) while the test thread was starved beyond 80 % of the watchdog:
-  // the wheel then stopped in between, and the count says nothing.
+  // 20 ms), then its ticks over 2 s of source time; max_gap over both.
+  // Repeated (3 times at most) while the test thread was starved beyond
+  // 80 % of the watchdog: the wheel then stopped in between, and the count
+  // says nothing.
   const double starved = 0.8 * c.watchdog_ms / 1000.0;
   double start = 0.0, end = 0.0;
   int32_t first = 0, last = 0;

@@ -162,7 +162,8 @@ bool ball_jobs_wanted(const TeamWatch& team, const std::set<std::string>& gone, 
     ++c.second;
   }
   const auto at_last = cycles.find(first);
-  const double floor = std::max(kMinOpportunity, at_last == cycles.end() ? 0.0 : 0.5 * at_last->second.first / at_last->second.second);
+  const double before = at_last == cycles.end() ? 0.0 : at_last->second.first / at_last->second.second;
+  const double floor = std::max(kMinOpportunity, 0.5 * before);
   for (const auto& [k, c] : cycles)
     if (k != first && c.first / c.second < floor) return false;
   return cycles.size() > (at_last == cycles.end() ? 0u : 1u);
