@@ -72,12 +72,8 @@ CoordinationMessage Coordinator::publish(double now, const Pose2D& pose, const C
 bool Coordinator::receive(const CoordinationMessage& m) {
   if (m.robot_id.empty() || m.robot_id == self_.id) return m.robot_id == self_.id;
   if (m.leaving) {
-    const auto held = team_.find(m.robot_id);
-    if (held != team_.end()) {
-      ++drops_;
-      if (held->second.intention >= 0) vacated_.push_back(held->second.intention);
-    }
-    forget(m.robot_id);
+    if (team_.count(m.robot_id)) drop(m.robot_id);
+    else forget(m.robot_id);
     return true;
   }
   const auto n = slots_.size();
@@ -106,6 +102,13 @@ void Coordinator::update_rate(const CoordinationMessage& before, const Coordinat
   for (std::size_t i = 0; dt > 0.0 && i < m.time.size() && i < before.time.size(); ++i)
     if (std::isfinite(m.time[i]) && std::isfinite(before.time[i]))
       rate[i] = std::clamp((m.time[i] - before.time[i]) / dt, -options_.max_time_rate, options_.max_time_rate);
+}
+
+void Coordinator::drop(const std::string& id) {
+  const int slot = team_.at(id).intention;
+  if (slot >= 0) vacated_.push_back(slot);
+  forget(id);
+  ++drops_;
 }
 
 void Coordinator::forget(const std::string& id) {
@@ -152,10 +155,8 @@ Allocation Coordinator::step(double now) {
     // have heard it for drop_timeout: survivors whose own copy of its last
     // message was lost drop it with the others, not a cycle earlier.
     if (it->first != self_.id && now - newest(it->first, it->second) > options_.drop_timeout) {
-      if (it->second.intention >= 0) vacated_.push_back(it->second.intention);
       const std::string id = (it++)->first;
-      forget(id);
-      ++drops_;
+      drop(id);
     } else {
       ++it;
     }

@@ -148,6 +148,8 @@ class Coordinator {
   std::map<std::string, double> heard_;  // teammate -> newest stamp known through gossip
   std::map<std::string, std::vector<double>> time_rate_;  // teammate -> per slot, d time / d stamp
   void update_rate(const CoordinationMessage& before, const CoordinationMessage& m);
+  /// A held teammate drops out: its slot is vacated, it is forgotten, counted.
+  void drop(const std::string& id);
   void forget(const std::string& id);
   double newest(const std::string& id, const CoordinationMessage& m) const;
   Allocation last_;
