@@ -72,6 +72,28 @@ void TeamSim::set_goals(std::vector<Body>& team, std::vector<Vec2>& offsets, int
   }
 }
 
+// Robots are solid: two that overlap after a step are pushed apart along the
+// line between their centres, half the overlap each, and lose the part of
+// their velocity that drives them into each other.
+void TeamSim::separate() {
+  std::vector<Body*> all;
+  for (Body& b : mates_) all.push_back(&b);
+  for (Body& b : opps_) all.push_back(&b);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      Body& a = *all[i];
+      Body& b = *all[j];
+      const Vec2 d = b.p - a.p;
+      const double dist = d.norm(), contact = a.radius + b.radius;
+      if (dist >= contact) continue;
+      const Vec2 n = dist > 1e-9 ? Vec2(d / dist) : Vec2(1.0, 0.0);
+      a.p -= 0.5 * (contact - dist) * n;
+      b.p += 0.5 * (contact - dist) * n;
+      a.v -= std::max(0.0, a.v.dot(n)) * n;
+      b.v -= std::min(0.0, b.v.dot(n)) * n;
+    }
+}
+
 Vec2 TeamSim::random_point() {
   std::uniform_real_distribution<double> ux(-kHalfX + 0.5, kHalfX - 0.5), uy(-kHalfY + 0.5, kHalfY - 0.5);
   return Vec2(ux(rng_), uy(rng_));
@@ -105,6 +127,7 @@ void TeamSim::step(double dt) {
   }
   for (Body& b : mates_) move(b, dt);
   for (Body& b : opps_) move(b, dt);
+  separate();
   // The ball: kicked every 2-4 s to a random velocity up to 4 m/s, rolling
   // friction, bouncing off the field border.
   kick_timer_ -= dt;

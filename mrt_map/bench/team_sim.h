@@ -1,5 +1,6 @@
 // The benchmark's own little world (ROS-free, not mrt_sim): an MSL field
-// with 5 teammates, 5 opponents and a ball moving, and a camera model per
+// with 5 teammates, 5 opponents (solid: they push each other apart, never
+// drive through each other) and a ball moving, and a camera model per
 // robot (range limit, occlusion by robots, distance-dependent noise,
 // missed detections, clutter) producing mrt_map percept objects.
 #pragma once
@@ -56,6 +57,7 @@ class TeamSim {
 
  private:
   void move(Body& b, double dt);
+  void separate();
   void set_goals(std::vector<Body>& team, std::vector<Vec2>& offsets, int& chaser, double side);
   Vec2 random_point();
   bool team_play_ = false;  // (declared before rng_: initialised first)

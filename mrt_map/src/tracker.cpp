@@ -80,9 +80,12 @@ void Tracker::coalesce() {
       // (Not extended to one teammate's two tracks: a teammate's own
       // duplicates would then keep ours apart; measured worse in map_bench.)
       if (seen_in_one_frame(a.id, b.id)) continue;
-      // Two lost anchors of a class with a cardinality: their predictions
-      // meet where the objects crossed unseen; nothing says they are one.
-      if (!seen_.count(a.id) && !seen_.count(b.id) && cardinality_class(a.class_index) >= 0) continue;
+      // A lost anchor of a class with a cardinality (unsupported this
+      // cycle) stays for its object's return: its prediction meeting
+      // another anchor (its covariance grown wide) says nothing of identity.
+      if ((!seen_.count(a.id) && cardinality_class(a.class_index) >= 0) ||
+          (!seen_.count(b.id) && cardinality_class(b.class_index) >= 0))
+        continue;
       const Vec4 y = a.fused.x - b.fused.x;
       // Cheap sufficient reject: the position part alone exceeds the gate.
       if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
@@ -122,6 +125,22 @@ void Tracker::coalesce() {
   close_since_ = std::move(still_close);
 }
 
+void Tracker::keep_lost_off_held(std::vector<std::vector<double>>& cost, double gate) const {
+  // An observation (or track) inside the gate of an anchor that is not
+  // lost is that anchor's or a duplicate of it: it cannot bring back a
+  // lost anchor of a class with a cardinality, whose wide gate would
+  // otherwise take another object's detections.
+  for (std::vector<double>& row : cost) {
+    bool held = false;
+    for (std::size_t c = 0; c < row.size() && !held; ++c)
+      held = row[c] < gate && anchors_[c].status != AnchorStatus::kCoasting;
+    if (!held) continue;
+    for (std::size_t c = 0; c < row.size(); ++c)
+      if (anchors_[c].status == AnchorStatus::kCoasting && cardinality_class(anchors_[c].class_index) >= 0)
+        row[c] = kInfeasible;
+  }
+}
+
 Anchor* Tracker::reidentify(int class_index, const Vec2& z, const Mat2& R) {
   const double gate = model_.tracker().reid_gate;
   Anchor* best = nullptr;
@@ -153,6 +172,7 @@ void Tracker::associate_local(double now, const std::vector<Observation>& obs) {
                (obs[r].z - anchors_[c].fused.x.head<2>()).norm() <= radius)
         cost[r][c] = gate;
     }
+  keep_lost_off_held(cost, gate);
   const std::vector<int> match = assign(cost, gate);
   const std::size_t existing = anchors_.size();
   std::map<int, std::vector<std::size_t>> pending;  // by class at its cardinality: unmatched observations
@@ -313,6 +333,7 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
         const bool sticky = link != a.remote_ids.end() && link->second == tracks[r]->id;
         cost[r][c] = sticky ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
       }
+    keep_lost_off_held(cost, gate);
     const std::vector<int> match = assign(cost, gate);
     for (std::size_t r = 0; r < tracks.size(); ++r) {
       RemoteTrack& t = *tracks[r];

@@ -160,3 +160,56 @@ TEST(Cardinality, LostAnchorClaimedOutsideTheGate) {
     EXPECT_NEAR(back->fused.x(0), 3.0, 1e-9);
   }
 }
+
+// A lost anchor is not coalesced into a seen one: object 1 stands at (0, 0),
+// seen from 0 to 1 s, then unseen; object 2 stands at (0.6, 0), seen all the
+// time. With max_count 2 anchor 1 is kept while lost; its position variance
+// grows (about q t^3 / 3 = 0.25 t^3 / 3 m^2 after t s unseen: 0.083 at 1 s),
+// so by t ~ 2 s (0.36 / 0.67 = 0.5 < coalesce_gate 9.49) object 2's anchor
+// lies well inside its gate: the old rule (only two *lost* anchors kept
+// apart) joined them after coalesce_after 0.5 s into id 1, which then stood
+// on object 2, and object 1 came back at t = 4 s as id 3. Now: ids 1 and 2
+// stay, and object 1 comes back as id 1.
+TEST(Cardinality, LostAnchorIsNotCoalescedIntoASeenOne) {
+  const ConceptualModel m = model(2);
+  Tracker tr(m);
+  int k = 0;
+  for (; k <= 10; ++k) tr.cycle(0.1 * k, {obs(0, 0, 0.1 * k), obs(0.6, 0, 0.1 * k)}, {});
+  for (; k < 40; ++k) tr.cycle(0.1 * k, {obs(0.6, 0, 0.1 * k)}, {});
+  ASSERT_EQ(tr.anchors().size(), 2u);
+  const Anchor* lost = nearest(tr, 0, 0);
+  EXPECT_EQ(lost->id, 1u);
+  EXPECT_EQ(lost->status, AnchorStatus::kCoasting);
+  EXPECT_GT(lost->fused.P(0, 0), 0.36 / 9.49);  // object 2 is inside its gate
+  EXPECT_EQ(nearest(tr, 0.6, 0)->id, 2u);
+  tr.cycle(4.0, {obs(0, 0, 4.0), obs(0.6, 0, 4.0)}, {});
+  ASSERT_EQ(tr.anchors().size(), 2u);
+  EXPECT_EQ(nearest(tr, 0, 0)->id, 1u);
+  EXPECT_EQ(nearest(tr, 0.6, 0)->id, 2u);
+}
+
+// A detection inside a tracked anchor's gate does not bring back a lost
+// one: anchor 1 lost at (0, 0) since t = 1 s (position variance ~0.67 m^2 at
+// t = 3 s), anchor 2 tracked at (1, 0) (variance ~1e-4). At t = 3 s object 2
+// is detected twice, at (1, 0) and by a second camera at (1.02, 0) (d2 ~
+// 0.0004 / 2e-4 = 2 from anchor 2, inside its gate; 1.04 / 0.67 = 1.6 from
+// anchor 1). The assignment gives one detection to each anchor: before this
+// rule anchor 1 took the second and jumped 1 m onto object 2. Now anchor 1
+// stays lost at (0, 0), the second detection counts as anchor 2's duplicate
+// (no new symbol), and no third anchor appears.
+TEST(Cardinality, DetectionInsideATrackedGateDoesNotBringBackALostAnchor) {
+  const ConceptualModel m = model(2);
+  Tracker tr(m);
+  int k = 0;
+  for (; k <= 10; ++k) tr.cycle(0.1 * k, {obs(0, 0, 0.1 * k), obs(1, 0, 0.1 * k)}, {});
+  for (; k < 30; ++k) tr.cycle(0.1 * k, {obs(1, 0, 0.1 * k)}, {});
+  Observation twin = obs(1.02, 0, 3.0);
+  twin.sensors = {"r1/cam2"};
+  tr.cycle(3.0, {obs(1, 0, 3.0), twin}, {});
+  ASSERT_EQ(tr.anchors().size(), 2u);
+  const Anchor& a1 = tr.anchors()[0];
+  EXPECT_EQ(a1.id, 1u);
+  EXPECT_EQ(a1.status, AnchorStatus::kCoasting);
+  EXPECT_LT(a1.fused.x.head<2>().norm(), 0.05);
+  EXPECT_EQ(nearest(tr, 1, 0)->id, 2u);
+}

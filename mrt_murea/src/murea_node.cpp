@@ -6,11 +6,13 @@
 // the core's Tracker.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <message_filters/subscriber.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -43,7 +45,21 @@ class MureaNode {
         tf_listener_(tf_buffer_) {
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 10, true);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("evidence_markers", 5);
-    percept_sub_ = nh.subscribe("percepts", 10, &MureaNode::on_percept, this);
+    if (opt_.odom_topic.empty()) {
+      // Odometry from tf: each frame waits in the filter until odom ->
+      // base_link is known at its stamp (the odometry may lag the camera).
+      percept_filter_sub_.subscribe(nh, "percepts", 10);
+      tf_filter_ = std::make_unique<tf2_ros::MessageFilter<mrt_msgs::Percept>>(percept_filter_sub_, tf_buffer_,
+                                                                              odom_frame_, 20, nh);
+      tf_filter_->registerCallback([this](const mrt_msgs::Percept::ConstPtr& m) { on_percept(*m); });
+      tf_filter_->registerFailureCallback(
+          [this](const mrt_msgs::Percept::ConstPtr&, tf2_ros::filter_failure_reasons::FilterFailureReason) {
+            ++frames_;
+            no_odometry();
+          });
+    } else {
+      percept_sub_ = nh.subscribe("percepts", 10, &MureaNode::on_percept, this);
+    }
     initial_sub_ = nh.subscribe("initialpose", 2, &MureaNode::on_initial_pose, this);
     if (!opt_.odom_topic.empty()) odom_sub_ = nh.subscribe(opt_.odom_topic, 50, &MureaNode::on_odom, this);
     global_srv_ = nh.advertiseService("global_localization", &MureaNode::on_global, this);
@@ -65,19 +81,21 @@ class MureaNode {
   }
 
  private:
-  // The odometry pose of base_link at `stamp` (latest when not available yet).
+  // The odometry pose of base_link at `stamp`: from tf (the filter let the
+  // frame through once it was known) or the odometry topic's latest.
   std::optional<Pose2D> odom_at(const ros::Time& stamp) {
     if (!opt_.odom_topic.empty()) return last_odom_msg_;
     try {
-      return rc::to_pose2d(transform_to_pose(tf_buffer_.lookupTransform(odom_frame_, base_frame_, stamp,
-                                                                        ros::Duration(0.05))));
+      return rc::to_pose2d(transform_to_pose(tf_buffer_.lookupTransform(odom_frame_, base_frame_, stamp)));
     } catch (const tf2::TransformException&) {
-      try {
-        return rc::to_pose2d(transform_to_pose(tf_buffer_.lookupTransform(odom_frame_, base_frame_, ros::Time(0))));
-      } catch (const tf2::TransformException&) {
-        return std::nullopt;
-      }
+      return std::nullopt;
     }
+  }
+
+  void no_odometry() {
+    ++no_odom_;
+    ROS_WARN_THROTTLE(5.0, "murea: no odometry (%s -> %s) at a frame's stamp: frame skipped", odom_frame_.c_str(),
+                      base_frame_.c_str());
   }
 
   static geometry_msgs::Pose transform_to_pose(const geometry_msgs::TransformStamped& t) {
@@ -115,11 +133,7 @@ class MureaNode {
     std::vector<Percept> ps = to_percepts(msg, drops_);
     to_base_frame(ps, *mount);
     const std::optional<Pose2D> odom = odom_at(msg.header.stamp);
-    if (!odom) {
-      ++no_odom_;
-      ROS_WARN_THROTTLE(5.0, "murea: no odometry (%s -> %s): frame skipped", odom_frame_.c_str(), base_frame_.c_str());
-      return;
-    }
+    if (!odom) return no_odometry();
     last_percepts_ = ps;
     const auto t0 = std::chrono::steady_clock::now();
     const TrackResult r = track_frame(tracker_, &last_odom_, *odom, ps, opt_);
@@ -221,6 +235,8 @@ class MureaNode {
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher pose_pub_, markers_pub_;
   ros::Subscriber percept_sub_, initial_sub_, odom_sub_;
+  message_filters::Subscriber<mrt_msgs::Percept> percept_filter_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<mrt_msgs::Percept>> tf_filter_;
   ros::ServiceServer global_srv_, relocalize_srv_;
   ros::Timer tf_timer_, diag_timer_;
   diagnostic_updater::Updater diag_;
