@@ -13,8 +13,10 @@
 #include <map>
 #include <memory>
 #include <tuple>
+#include <vector>
 
 #include "mrt_common/cli.h"
+#include "mrt_map/assignment.h"
 #include "mrt_map/world_model.h"
 #include "bench_diag.h"
 #include "team_sim.h"
@@ -137,30 +139,57 @@ void count_anchors(const WorldModel& team, const WorldModel& alone, int ball_cla
     if (a.status == AnchorStatus::kConfirmed) c.alone_robots += alone.model().is_a(a.class_index, opp_class);
 }
 
-// Each opponent keeps its anchor while that anchor is confirmed and within
-// 0.5 m of it (as in the CLEAR MOT metrics); otherwise it takes the nearest
-// confirmed Opponent anchor within 0.5 m; taking a different id than the
-// last one is an identity switch.
 std::map<long, std::string>& last_state() {
   static std::map<long, std::string> m;
   return m;
 }
 
+// The CLEAR MOT correspondence (Bernardin and Stiefelhagen, 2008), one to
+// one: an opponent keeps last step's anchor while that anchor is confirmed
+// and within 0.5 m of it (and no other opponent kept it first); the others
+// are matched to the remaining confirmed Opponent anchors within 0.5 m by a
+// minimum total distance assignment; an opponent matched to a different id
+// than its last one is an identity switch. (Until session 19 each opponent
+// took its nearest anchor on its own, so two touching opponents could both
+// take one anchor: a switch and a switch back within a step or two.)
+std::vector<const Anchor*> correspond(const WorldModel& w, int opp_class, const TeamSim& sim,
+                                      const std::vector<long>& last_id) {
+  constexpr double kRadius = 0.5;
+  const std::size_t n = sim.opponents().size();
+  std::vector<const Anchor*> anchors, match(n, nullptr);
+  for (const Anchor& a : w.tracker().anchors())
+    if (a.status == AnchorStatus::kConfirmed && w.model().is_a(a.class_index, opp_class)) anchors.push_back(&a);
+  std::vector<bool> used(anchors.size(), false);
+  auto dist = [&](std::size_t o, std::size_t k) {
+    return (anchors[k]->fused.x.head<2>() - sim.opponents()[o].p).norm();
+  };
+  for (std::size_t o = 0; o < n; ++o)
+    for (std::size_t k = 0; k < anchors.size(); ++k)
+      if (!used[k] && static_cast<long>(anchors[k]->id) == last_id[o] && dist(o, k) < kRadius) {
+        match[o] = anchors[k];
+        used[k] = true;
+      }
+  std::vector<std::size_t> rows, cols;
+  for (std::size_t o = 0; o < n; ++o)
+    if (!match[o]) rows.push_back(o);
+  for (std::size_t k = 0; k < anchors.size(); ++k)
+    if (!used[k]) cols.push_back(k);
+  std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(cols.size(), kInfeasible));
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      if (dist(rows[r], cols[c]) < kRadius) cost[r][c] = dist(rows[r], cols[c]);
+  const std::vector<int> m = assign(cost, kRadius);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (m[r] >= 0) match[rows[r]] = anchors[cols[static_cast<std::size_t>(m[r])]];
+  return match;
+}
+
 long identity_switches(const WorldModel& w, int opp_class, const TeamSim& sim, std::vector<long>& last_id,
                        std::vector<bool>& was_matched, SwitchDiag& diag) {
   long switches = 0;
+  const std::vector<const Anchor*> match = correspond(w, opp_class, sim, last_id);
   for (std::size_t o = 0; o < sim.opponents().size(); ++o) {
-    const Anchor* best = nullptr;
-    double best_d = 0.5;
-    for (const Anchor& a : w.tracker().anchors()) {
-      if (a.status != AnchorStatus::kConfirmed || !w.model().is_a(a.class_index, opp_class)) continue;
-      const double d = (a.fused.x.head<2>() - sim.opponents()[o].p).norm();
-      if (d < 0.5 && static_cast<long>(a.id) == last_id[o]) {
-        best = &a;
-        break;
-      }
-      if (d < best_d) best = &a, best_d = d;
-    }
+    const Anchor* best = match[o];
     const bool matched_before = was_matched[o];
     was_matched[o] = best != nullptr;
     ++(best ? diag.matched_steps : diag.unmatched_steps);

@@ -80,6 +80,11 @@ void Tracker::coalesce() {
       // (Not extended to one teammate's two tracks: a teammate's own
       // duplicates would then keep ours apart; measured worse in map_bench.)
       if (seen_in_one_frame(a.id, b.id)) continue;
+      // Of a class with a cardinality: one teammate's two tracks support
+      // them this cycle (it sees two objects there).
+      if ((cardinality_class(a.class_index) >= 0 || cardinality_class(b.class_index) >= 0) &&
+          one_teammate_apart(a, b))
+        continue;
       // A lost anchor of a class with a cardinality (unsupported this
       // cycle) stays for its object's return: its prediction meeting
       // another anchor (its covariance grown wide) says nothing of identity.
@@ -258,6 +263,14 @@ bool Tracker::seen_in_one_frame(std::uint32_t a, std::uint32_t b) const {
   if (fa == own_seen_.end() || fb == own_seen_.end()) return false;
   for (const auto& frame : fa->second)
     if (fb->second.count(frame)) return true;
+  return false;
+}
+
+bool Tracker::one_teammate_apart(const Anchor& a, const Anchor& b) {
+  for (const auto& [robot, t] : a.remote) {
+    const auto o = b.remote.find(robot);
+    if (o != b.remote.end() && o->second.id != t.id) return true;
+  }
   return false;
 }
 

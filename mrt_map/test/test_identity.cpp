@@ -2,6 +2,9 @@
 // anchors for good (never coalesced, never swapped).
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "mrt_map/tracker.h"
 #include "observations.h"
 
@@ -11,10 +14,10 @@ using mrt::map::test::obs;
 namespace {
 
 // Opponents with a constant-velocity model; coalescence after 0.5 s within 9.49.
-ConceptualModel opponents_model() {
+ConceptualModel opponents_model(const std::string& max_count = "") {
   return ConceptualModel::parse(
       "classes:\n"
-      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2}\n"
+      "  Opponent: {motion: constant_velocity, accel_noise: 1.5, init_speed_sigma: 2" + max_count + "}\n"
       "tracker: {gate: 9.21, confirm_hits: 3, coalesce_gate: 9.49, coalesce_after: 0.5}\n",
       "m.yaml");
 }
@@ -75,4 +78,51 @@ TEST(Tracker, TwoFramesOfOneSensorInOneCycleAreNotTwoObjects) {
       EXPECT_NEAR(a.fused.x(0), 1.0, 0.05);
     }
   EXPECT_EQ(alive, 1u);
+}
+
+TEST(Tracker, TwoTracksOfOneTeammateAreTwoObjectsOfAClassWithACardinality) {
+  // The same two opponents as in TwoNearAnchorsSwapFree (0.2 m apart, 1 m/s
+  // along x, 2 s), seen by teammate r2 only: its tracks 7 and 8 (variance
+  // 0.04, velocity variance 0.01) at 10 Hz. Each track keeps its anchor
+  // (the link is sticky), and the anchors' states stay inside the
+  // coalescence gate (d2 ~ 0.04 / 0.08 = 0.5). Without a cardinality they
+  // are joined into id 1 after coalesce_after; with one (max_count 5) the
+  // teammate seeing two objects there keeps ids 1 and 2 apart.
+  for (const std::string card : {"", ", max_count: 5"}) {
+    const ConceptualModel m = opponents_model(card);
+    const int opp = m.find("Opponent");
+    Tracker tr(m);
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k;
+      std::vector<RemoteTrack> tracks;
+      for (const double y : {0.0, 0.2}) {
+        RemoteTrack r;
+        r.robot = "r2";
+        r.id = y == 0.0 ? 7 : 8;
+        r.class_index = opp;
+        r.estimate.x << t, y, 1.0, 0.0;
+        r.estimate.P = Vec4(0.04, 0.04, 0.01, 0.01).asDiagonal();
+        r.estimate.stamp = t;
+        r.last_seen = t;
+        r.sensors = {"r2/cam"};
+        tracks.push_back(r);
+      }
+      tr.cycle(t, {}, tracks);
+    }
+    std::vector<const Anchor*> alive;
+    for (const Anchor& a : tr.anchors())
+      if (a.status == AnchorStatus::kConfirmed) alive.push_back(&a);
+    if (card.empty()) {
+      ASSERT_EQ(alive.size(), 1u);
+      EXPECT_EQ(alive[0]->id, 1u);
+      EXPECT_EQ(tr.coalesced_count(), 1u);
+    } else {
+      ASSERT_EQ(alive.size(), 2u);
+      EXPECT_EQ(alive[0]->id, 1u);
+      EXPECT_EQ(alive[1]->id, 2u);
+      EXPECT_NEAR(alive[0]->fused.x(1), 0.0, 1e-6);
+      EXPECT_NEAR(alive[1]->fused.x(1), 0.2, 1e-6);
+      EXPECT_EQ(tr.coalesced_count(), 0u);
+    }
+  }
 }

@@ -96,6 +96,7 @@ class Tracker {
   // anchor this cycle.
   std::map<std::uint32_t, std::set<std::pair<std::string, double>>> own_seen_;
   bool seen_in_one_frame(std::uint32_t a, std::uint32_t b) const;
+  static bool one_teammate_apart(const Anchor& a, const Anchor& b);
   void keep_lost_off_held(std::vector<std::vector<double>>& cost, double gate) const;
 };
 
