@@ -6,7 +6,6 @@
 // the core's Tracker.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
-#include <message_filters/subscriber.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -45,20 +44,16 @@ class MureaNode {
         tf_listener_(tf_buffer_) {
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 10, true);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("evidence_markers", 5);
+    percept_sub_ = nh.subscribe("percepts", 10, &MureaNode::on_percept_msg, this);
     if (opt_.odom_topic.empty()) {
       // Odometry from tf: each frame waits in the filter until odom ->
       // base_link is known at its stamp (the odometry may lag the camera).
-      percept_filter_sub_.subscribe(nh, "percepts", 10);
-      tf_filter_ = std::make_unique<tf2_ros::MessageFilter<mrt_msgs::Percept>>(percept_filter_sub_, tf_buffer_,
-                                                                              odom_frame_, 20, nh);
+      tf_filter_ = std::make_unique<tf2_ros::MessageFilter<mrt_msgs::Percept>>(tf_buffer_, odom_frame_, 20, nh);
       tf_filter_->registerCallback([this](const mrt_msgs::Percept::ConstPtr& m) { on_percept(*m); });
       tf_filter_->registerFailureCallback(
           [this](const mrt_msgs::Percept::ConstPtr&, tf2_ros::filter_failure_reasons::FilterFailureReason) {
-            ++frames_;
             no_odometry();
           });
-    } else {
-      percept_sub_ = nh.subscribe("percepts", 10, &MureaNode::on_percept, this);
     }
     initial_sub_ = nh.subscribe("initialpose", 2, &MureaNode::on_initial_pose, this);
     if (!opt_.odom_topic.empty()) odom_sub_ = nh.subscribe(opt_.odom_topic, 50, &MureaNode::on_odom, this);
@@ -121,15 +116,25 @@ class MureaNode {
     odom_stamp_ = m.header.stamp;
   }
 
-  void on_percept(const mrt_msgs::Percept& msg) {
+  // A frame in a frame tf does not know is dropped here (it would wait in
+  // the filter for ever); the others go to the filter or, with an odometry
+  // topic, straight on.
+  void on_percept_msg(const mrt_msgs::Percept::ConstPtr& msg) {
     ++frames_;
+    if (!sensor_mount(msg->header.frame_id, ros::Time(0))) return drop_frame(*msg);
+    if (tf_filter_) tf_filter_->add(msg);
+    else on_percept(*msg);
+  }
+
+  void drop_frame(const mrt_msgs::Percept& msg) {
+    dropped_frame_ += msg.objects.size();
+    ROS_WARN_THROTTLE(5.0, "murea: percepts in frame '%s' dropped (no transform to '%s')", msg.header.frame_id.c_str(),
+                      base_frame_.c_str());
+  }
+
+  void on_percept(const mrt_msgs::Percept& msg) {
     const std::optional<Pose2D> mount = sensor_mount(msg.header.frame_id, msg.header.stamp);
-    if (!mount) {
-      dropped_frame_ += msg.objects.size();
-      ROS_WARN_THROTTLE(5.0, "murea: percepts in frame '%s' dropped (no transform to '%s')",
-                        msg.header.frame_id.c_str(), base_frame_.c_str());
-      return;
-    }
+    if (!mount) return drop_frame(msg);
     std::vector<Percept> ps = to_percepts(msg, drops_);
     to_base_frame(ps, *mount);
     const std::optional<Pose2D> odom = odom_at(msg.header.stamp);
@@ -235,7 +240,6 @@ class MureaNode {
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher pose_pub_, markers_pub_;
   ros::Subscriber percept_sub_, initial_sub_, odom_sub_;
-  message_filters::Subscriber<mrt_msgs::Percept> percept_filter_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<mrt_msgs::Percept>> tf_filter_;
   ros::ServiceServer global_srv_, relocalize_srv_;
   ros::Timer tf_timer_, diag_timer_;
