@@ -395,6 +395,11 @@ void Tracker::fuse(double now) {
     if (a.has_local) parts.push_back(&a.local);
     for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
     if (parts.empty()) continue;
+    // Only an own filter older than the anchor's last support is left (the
+    // teammates' support just ended): the team estimate, predicted, is the
+    // better one; falling back to the stale own filter made the anchor jump
+    // (and, its covariance wide, take a false detection metres away).
+    if (a.remote.empty() && a.local_last_seen < a.last_seen && a.hits > 0) continue;
     Estimate f = *parts[0];
     for (std::size_t i = 1; i < parts.size(); ++i)
       f = ci ? covariance_intersection(f, *parts[i]) : fuse_estimates(f, *parts[i]);

@@ -123,3 +123,46 @@ TEST(Tracker, ReidentifiesCoastingAnchor) {
     }
   }
 }
+
+// When the teammates' support ends and only a stale own filter is left,
+// the anchor keeps the team estimate (predicted), not the own filter: the
+// object was seen by the own camera at (0, 0) until t = 0.5 s, then moved
+// and only teammate r2 saw it, at (0.4, 0) (variance 0.01, still; linked
+// as a manoeuvre, within maneuver_radius 0.5 m), until t = 1.5 s. The fused
+// estimate is then the covariance intersection of the stale own filter
+// (1 s unseen: position variance about q t^3 / 3 = 0.33) and r2's: close
+// to (0.4, 0). At t = 1.6 s nobody sees it: before this rule the anchor
+// fell back to its own filter, 0.4 m back near (0, 0) with a position
+// variance of 0.51 (measured; wide enough to take a false detection metres
+// away); now it stays at (0.4, 0).
+TEST(Tracker, TeamEstimateOutlivesAStaleOwnFilter) {
+  const ConceptualModel m = ConceptualModel::parse(
+      "classes:\n  Ball: {motion: constant_velocity, accel_noise: 1, init_speed_sigma: 0.1}\n"
+      "tracker: {gate: 9.21, confirm_hits: 3, coast_after: 0.3, drop_after: 3.0, max_sigma: 3}\n"
+      "team: {gate: 13.82}\n",
+      "m.yaml");
+  Tracker tr(m);
+  for (int k = 0; k <= 5; ++k) tr.cycle(0.1 * k, {obs(0, 0.0, 0.0, 1e-4, 0.1 * k)}, {});
+  for (int k = 6; k <= 15; ++k) {
+    const double t = 0.1 * k;
+    RemoteTrack r;
+    r.robot = "r2";
+    r.id = 4;
+    r.class_index = 0;
+    r.estimate.x << 0.4, 0.0, 0.0, 0.0;
+    r.estimate.P = Vec4(0.01, 0.01, 0.01, 0.01).asDiagonal();
+    r.estimate.stamp = t;
+    r.last_seen = t;
+    r.sensors = {"r2/cam"};
+    tr.cycle(t, {}, {r});
+  }
+  ASSERT_EQ(tr.anchors().size(), 1u);
+  EXPECT_NEAR(tr.anchors()[0].fused.x(0), 0.4, 0.05);
+  EXPECT_GT(tr.anchors()[0].local.P(0, 0), 0.3);  // the own filter is stale
+  tr.cycle(1.6, {}, {});
+  ASSERT_EQ(tr.anchors().size(), 1u);
+  const Anchor& a = tr.anchors()[0];
+  EXPECT_NEAR(a.fused.x(0), 0.4, 0.05);
+  EXPECT_LT(a.fused.P(0, 0), 0.1);
+  EXPECT_EQ(a.status, AnchorStatus::kConfirmed);  // unseen 0.1 s < coast_after
+}
