@@ -72,6 +72,10 @@ void Tracker::coalesce() {
       Anchor& b = anchors_[j];
       if (b.status == AnchorStatus::kDropped || a.status == AnchorStatus::kDropped) continue;
       if (!model_.compatible(a.class_index, b.class_index)) continue;
+      const Vec4 y = a.fused.x - b.fused.x;
+      // Cheap sufficient reject: the position part alone exceeds the gate.
+      if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
+        continue;
       // Seen apart: one frame of an own sensor held a distinct observation
       // for each this cycle (the association gives one observation to one
       // anchor): two objects side by side, not one with two symbols; each
@@ -82,19 +86,12 @@ void Tracker::coalesce() {
       // support them this cycle (it sees two objects there). For every
       // class this measured worse in map_bench (a teammate's own duplicates
       // of a ball keep ours apart).
-      if ((cardinality_class(a.class_index) >= 0 || cardinality_class(b.class_index) >= 0) &&
-          one_teammate_apart(a, b))
-        continue;
+      const bool card_a = cardinality_class(a.class_index) >= 0, card_b = cardinality_class(b.class_index) >= 0;
+      if ((card_a || card_b) && one_teammate_apart(a, b)) continue;
       // A lost anchor of a class with a cardinality (unsupported this
       // cycle) stays for its object's return: its prediction meeting
       // another anchor (its covariance grown wide) says nothing of identity.
-      if ((!seen_.count(a.id) && cardinality_class(a.class_index) >= 0) ||
-          (!seen_.count(b.id) && cardinality_class(b.class_index) >= 0))
-        continue;
-      const Vec4 y = a.fused.x - b.fused.x;
-      // Cheap sufficient reject: the position part alone exceeds the gate.
-      if (y.head<2>().squaredNorm() > gate * (a.fused.P(0, 0) + a.fused.P(1, 1) + b.fused.P(0, 0) + b.fused.P(1, 1)))
-        continue;
+      if ((card_a && !seen_.count(a.id)) || (card_b && !seen_.count(b.id))) continue;
       const Mat4 S = a.fused.P + b.fused.P;
       if (y.dot(S.ldlt().solve(y)) > gate) continue;
       const auto key = std::make_pair(std::min(a.id, b.id), std::max(a.id, b.id));
@@ -135,14 +132,20 @@ void Tracker::keep_lost_off_held(std::vector<std::vector<double>>& cost, double 
   // lost is that anchor's or a duplicate of it: it cannot bring back a
   // lost anchor of a class with a cardinality, whose wide gate would
   // otherwise take another object's detections.
+  std::vector<bool> lost(anchors_.size());  // coasting, of a class with a cardinality
+  bool any = false;
+  for (std::size_t c = 0; c < anchors_.size(); ++c) {
+    lost[c] = anchors_[c].status == AnchorStatus::kCoasting && cardinality_class(anchors_[c].class_index) >= 0;
+    any = any || lost[c];
+  }
+  if (!any) return;
   for (std::vector<double>& row : cost) {
     bool held = false;
     for (std::size_t c = 0; c < row.size() && !held; ++c)
       held = row[c] < gate && anchors_[c].status != AnchorStatus::kCoasting;
     if (!held) continue;
     for (std::size_t c = 0; c < row.size(); ++c)
-      if (anchors_[c].status == AnchorStatus::kCoasting && cardinality_class(anchors_[c].class_index) >= 0)
-        row[c] = kInfeasible;
+      if (lost[c]) row[c] = kInfeasible;
   }
 }
 
