@@ -82,10 +82,8 @@ void Tracker::coalesce() {
       // keeps its id. Two frames of one sensor queued into one cycle (a
       // lagging node) are not "apart": the second can open a duplicate.
       if (seen_in_one_frame(a.id, b.id)) continue;
-      // Of a class with a cardinality, also when one teammate's two tracks
-      // support them this cycle (it sees two objects there). For every
-      // class this measured worse in map_bench (a teammate's own duplicates
-      // of a ball keep ours apart).
+      // Of a class with a cardinality, also one teammate's two tracks (it
+      // sees two objects; for every class measured worse in map_bench).
       const bool card_a = cardinality_class(a.class_index) >= 0, card_b = cardinality_class(b.class_index) >= 0;
       if ((card_a || card_b) && one_teammate_apart(a, b)) continue;
       // A lost anchor of a class with a cardinality (unsupported this
@@ -398,10 +396,8 @@ void Tracker::fuse(double now) {
     if (a.has_local) parts.push_back(&a.local);
     for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);
     if (parts.empty()) continue;
-    // Only an own filter older than the anchor's last support is left (the
-    // teammates' support just ended): the team estimate, predicted, is the
-    // better one; falling back to the stale own filter made the anchor jump
-    // (and, its covariance wide, take a false detection metres away).
+    // Only an own filter older than the last support left (teammates' just
+    // ended): keep the team estimate, predicted (the stale one jumps, wide).
     if (a.remote.empty() && a.local_last_seen < a.last_seen && a.hits > 0) continue;
     Estimate f = *parts[0];
     for (std::size_t i = 1; i < parts.size(); ++i)
