@@ -17,6 +17,7 @@
 
 #include "mrt_common/cli.h"
 #include "mrt_map/assignment.h"
+#include "mrt_map/team_sender.h"
 #include "mrt_map/world_model.h"
 #include "bench_diag.h"
 #include "team_sim.h"
@@ -295,6 +296,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
   const char* tag = team_play ? "" : "random_scenario_";
   const int n = static_cast<int>(sim.mates().size());
   std::vector<std::unique_ptr<WorldModel>> team, alone;
+  std::vector<TeamSender> senders(static_cast<std::size_t>(n), TeamSender(model, g_team_period));
   for (int i = 0; i < n; ++i) {
     team.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
     alone.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
@@ -308,7 +310,6 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
   SwitchDiag switch_diag;
   BallDiag ball_diag;
   long switches = 0;
-  double next_team = 0.0;
   AnchorCounts counts;
   const long steps = static_cast<long>(minutes * 60.0 / kDt);
   mrt::cli::Progress progress("map_bench", static_cast<double>(steps));
@@ -341,10 +342,13 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
         score_ball(*team[i], ball_class, t, truth, team_stats[i], &ball_diag);
         score_ball(*alone[i], ball_class, t, truth, alone_stats[i]);
       }
-      if (t >= next_team)
-        network.push_back({t + g_team_latency, team[i]->options().robot, team[i]->local_tracks(), t, pose});
+      TeamSender& sender = senders[static_cast<std::size_t>(i)];
+      std::vector<RemoteTrack> tracks = team[i]->local_tracks();
+      if (sender.due(t, tracks)) {
+        sender.sent(t, tracks);
+        network.push_back({t + g_team_latency, team[i]->options().robot, std::move(tracks), t, pose});
+      }
     }
-    if (t >= next_team) next_team += g_team_period;
     count_anchors(*team[0], *alone[0], ball_class, opp_class, counts);
     for (int o = 0; o < static_cast<int>(sim.opponents().size()); ++o) {
       bool in_view = false;
@@ -356,6 +360,11 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
   progress.finish();
   print_run(tag, minutes, team_stats, alone_stats, ball_diag.in_view_share(), switches, sim.opponents().size(), counts,
             steps);
+  double periodic = 0.0, on_deviation = 0.0;
+  for (const TeamSender& s : senders) periodic += s.periodic(), on_deviation += s.on_deviation();
+  const double robot_seconds = n * minutes * 60.0;
+  std::printf("map_%steam_messages_per_robot_per_s: %.2f Hz (periodic %.2f, on deviation %.2f)\n", tag,
+              (periodic + on_deviation) / robot_seconds, periodic / robot_seconds, on_deviation / robot_seconds);
   if (!team_play) return;  // the diagnostics of the default scenario only
   ball_diag.print();
   switch_diag.print(sim.opponents().size(), minutes);

@@ -219,7 +219,8 @@ class ModelLoader {
   }
 
   void team(const YAML::Node& n) {
-    r_.map(n, "team", {"max_latency", "gate", "fusion", "extra_sigma"});
+    r_.map(n, "team", {"max_latency", "gate", "fusion", "extra_sigma", "send_threshold"});
+    m_.team_.send_threshold = r_.non_negative(n, "send_threshold", m_.team_.send_threshold);
     m_.team_.extra_sigma = r_.non_negative(n, "extra_sigma", m_.team_.extra_sigma);
     m_.team_.max_latency = r_.positive(n, "max_latency", m_.team_.max_latency);
     m_.team_.gate = r_.positive(n, "gate", m_.team_.gate);

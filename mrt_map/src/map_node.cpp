@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "mrt_common_ros/params.h"
+#include "mrt_map/team_sender.h"
 #include "mrt_map/world_model.h"
 #include "ros/conversions.h"
 
@@ -58,7 +59,7 @@ class MapNode {
  public:
   MapNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
       : opt_(read_options(pnh)), model_(mrt::map::ConceptualModel::load(opt_.model)), world_(model_, opt_.core),
-        tf_listener_(tf_buffer_) {
+        sender_(model_, 1.0 / opt_.team_rate), tf_listener_(tf_buffer_) {
     percept_sub_ = nh.subscribe("percepts", 20, &MapNode::on_percept, this);
     coordination_sub_ = nh.subscribe("coordination", 10, &MapNode::on_coordination, this);
     model_pub_ = nh.advertise<mrt_msgs::WorldModel>("world_model", 5);
@@ -73,7 +74,6 @@ class MapNode {
     diagnostics_.setHardwareID(opt_.core.robot);
     diagnostics_.add("MAP world model", this, &MapNode::diagnose);
     cycle_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &MapNode::on_cycle, this);
-    team_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.team_rate), &MapNode::on_team_timer, this);
   }
 
  private:
@@ -155,13 +155,15 @@ class MapNode {
     model_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, false));
     crisp_pub_.publish(conv::to_msg(world_.crisp(now.toSec()), now));
     if (marker_pub_.getNumSubscribers() > 0) marker_pub_.publish(conv::markers(world_, opt_.world_frame, now));
+    // The team exchange: on the heartbeat (team_rate) or on a deviation
+    // (the model's team.send_threshold).
+    const std::vector<mrt::map::RemoteTrack> tracks = world_.local_tracks();
+    if ((team_pub_ || dcdt_pub_) && sender_.due(now.toSec(), tracks)) {
+      if (team_pub_) team_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, true));
+      if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, opt_.world_frame, now));
+      sender_.sent(now.toSec(), tracks);
+    }
     diagnostics_.update();
-  }
-
-  void on_team_timer(const ros::TimerEvent&) {
-    const ros::Time now = ros::Time::now();
-    if (team_pub_) team_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, true));
-    if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, opt_.world_frame, now));
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
@@ -183,6 +185,8 @@ class MapNode {
     s.add("dropped outside the world", c.outside_world);
     s.add("dropped no robot pose", no_pose_);
     s.add("teammate models", team_models_);
+    s.add("team messages sent on the heartbeat", sender_.periodic());
+    s.add("team messages sent on a deviation", sender_.on_deviation());
     s.add("teammate anchors stale", c.stale_team);
     s.add("teammate anchors malformed", bad_anchors_);
     s.add("coordination parameters malformed", bad_parameters_);
@@ -191,11 +195,12 @@ class MapNode {
   NodeOptions opt_;
   mrt::map::ConceptualModel model_;
   mrt::map::WorldModel world_;
+  mrt::map::TeamSender sender_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   ros::Subscriber percept_sub_, coordination_sub_, team_sub_, dcdt_sub_;
   ros::Publisher model_pub_, crisp_pub_, marker_pub_, team_pub_, dcdt_pub_;
-  ros::Timer cycle_timer_, team_timer_;
+  ros::Timer cycle_timer_;
   diagnostic_updater::Updater diagnostics_;
   std::uint64_t percepts_ = 0, no_pose_ = 0, bad_anchors_ = 0, bad_parameters_ = 0, team_models_ = 0;
 };

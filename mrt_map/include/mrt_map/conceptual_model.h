@@ -88,6 +88,7 @@ struct TeamOptions {
   double gate = 13.82;       // chi-square 2 dof, 99.9 %
   double extra_sigma = 0.05; // m, added to a teammate's position sigma (its localisation bias)
   bool covariance_intersection = true;  // false: independent (Kalman) fusion
+  double send_threshold = 0.0;  // m, TeamSender: send when a teammate's prediction is this far off (0: periodic only)
 };
 
 /// The extent of the world (e.g. the field with its run-off area): no

@@ -1,0 +1,36 @@
+#include "mrt_map/team_sender.h"
+
+#include <stdexcept>
+
+#include "mrt_map/kalman.h"
+
+namespace mrt::map {
+
+TeamSender::TeamSender(const ConceptualModel& model, double period)
+    : model_(model), period_(period), threshold_(model.team().send_threshold) {
+  if (!(period > 0.0)) throw std::invalid_argument("TeamSender: the period must be > 0");
+}
+
+bool TeamSender::deviates(double now, const std::vector<RemoteTrack>& tracks) const {
+  if (!(threshold_ > 0.0)) return false;
+  for (const RemoteTrack& t : tracks) {
+    const auto s = sent_.find(t.id);
+    if (s == sent_.end()) return true;
+    const Estimate dead_reckoned = predict(s->second, model_.at(t.class_index), now);
+    if ((dead_reckoned.x.head<2>() - t.estimate.x.head<2>()).norm() > threshold_) return true;
+  }
+  return false;
+}
+
+bool TeamSender::due(double now, const std::vector<RemoteTrack>& tracks) const {
+  return now - last_ >= period_ - 1e-9 || deviates(now, tracks);
+}
+
+void TeamSender::sent(double now, const std::vector<RemoteTrack>& tracks) {
+  ++(now - last_ >= period_ - 1e-9 ? periodic_ : on_deviation_);
+  last_ = now;
+  sent_.clear();
+  for (const RemoteTrack& t : tracks) sent_[t.id] = t.estimate;
+}
+
+}  // namespace mrt::map
