@@ -296,7 +296,7 @@ void team_run(const ConceptualModel& model, double minutes, unsigned seed, bool 
   const char* tag = team_play ? "" : "random_scenario_";
   const int n = static_cast<int>(sim.mates().size());
   std::vector<std::unique_ptr<WorldModel>> team, alone;
-  std::vector<TeamSender> senders(static_cast<std::size_t>(n), TeamSender(model, g_team_period));
+  std::vector<TeamSender> senders(static_cast<std::size_t>(n), TeamSender(model, g_team_period, std::min(0.5 * kDt, 0.5 * g_team_period)));
   for (int i = 0; i < n; ++i) {
     team.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));
     alone.push_back(std::make_unique<WorldModel>(model, WorldModelOptions{"r" + std::to_string(i), 0.5}));

@@ -9,6 +9,7 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <memory>
 
 #include "mrt_common_ros/params.h"
@@ -59,7 +60,8 @@ class MapNode {
  public:
   MapNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
       : opt_(read_options(pnh)), model_(mrt::map::ConceptualModel::load(opt_.model)), world_(model_, opt_.core),
-        sender_(model_, 1.0 / opt_.team_rate), tf_listener_(tf_buffer_) {
+        sender_(model_, 1.0 / opt_.team_rate, std::min(0.5 / opt_.rate, 0.5 / opt_.team_rate)),
+        tf_listener_(tf_buffer_) {
     percept_sub_ = nh.subscribe("percepts", 20, &MapNode::on_percept, this);
     coordination_sub_ = nh.subscribe("coordination", 10, &MapNode::on_coordination, this);
     model_pub_ = nh.advertise<mrt_msgs::WorldModel>("world_model", 5);

@@ -6,9 +6,10 @@
 
 namespace mrt::map {
 
-TeamSender::TeamSender(const ConceptualModel& model, double period)
-    : model_(model), period_(period), threshold_(model.team().send_threshold) {
-  if (!(period > 0.0)) throw std::invalid_argument("TeamSender: the period must be > 0");
+TeamSender::TeamSender(const ConceptualModel& model, double period, double tolerance)
+    : model_(model), period_(period), tolerance_(tolerance), threshold_(model.team().send_threshold) {
+  if (!(period > 0.0) || !(tolerance >= 0.0 && tolerance < period))
+    throw std::invalid_argument("TeamSender: expected period > 0 and 0 <= tolerance < period");
 }
 
 bool TeamSender::deviates(double now, const std::vector<RemoteTrack>& tracks) const {
@@ -23,11 +24,11 @@ bool TeamSender::deviates(double now, const std::vector<RemoteTrack>& tracks) co
 }
 
 bool TeamSender::due(double now, const std::vector<RemoteTrack>& tracks) const {
-  return now - last_ >= period_ - 1e-9 || deviates(now, tracks);
+  return heartbeat(now) || deviates(now, tracks);
 }
 
 void TeamSender::sent(double now, const std::vector<RemoteTrack>& tracks) {
-  ++(now - last_ >= period_ - 1e-9 ? periodic_ : on_deviation_);
+  ++(heartbeat(now) ? periodic_ : on_deviation_);
   last_ = now;
   sent_.clear();
   for (const RemoteTrack& t : tracks) sent_[t.id] = t.estimate;

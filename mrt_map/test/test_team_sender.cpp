@@ -60,5 +60,21 @@ TEST(TeamSender, ThresholdZeroIsPeriodicOnly) {
   EXPECT_FALSE(s.due(0.05, {track(1, 5.0, 1.0, 0.05), track(2, 0.0, 0.0, 0.05)}));
   EXPECT_TRUE(s.due(0.1, {}));
   EXPECT_THROW(TeamSender(model(0.0), 0.0), std::invalid_argument);
+  EXPECT_THROW(TeamSender(model(0.0), 0.1, 0.1), std::invalid_argument);
+}
+
+// Checked once per 30 Hz cycle whose timer fires a little early: 3 cycles
+// are 0.0999 s. Without a tolerance the 10 Hz heartbeat slips to every 4th
+// cycle (7.5 Hz); with half a cycle it keeps every 3rd.
+TEST(TeamSender, HeartbeatToleratesTimerJitter) {
+  for (const double tolerance : {0.0, 0.5 / 30.0}) {
+    TeamSender s(model(0.0), 0.1, tolerance);
+    int sends = 0;
+    for (int k = 0; k < 300; ++k) {
+      const double now = k * (0.0999 / 3.0);
+      if (s.due(now, {})) s.sent(now, {}), ++sends;
+    }
+    EXPECT_EQ(sends, tolerance > 0.0 ? 100 : 75) << tolerance;
+  }
   EXPECT_THROW(ConceptualModel::parse("team: {send_threshold: -0.1}\n", "m.yaml"), mrt::common::ParseError);
 }

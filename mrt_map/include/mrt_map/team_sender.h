@@ -20,8 +20,11 @@ namespace mrt::map {
 class TeamSender {
  public:
   /// `period` (s, > 0): the heartbeat; the threshold is the model's
-  /// `team.send_threshold` (m; 0: periodic only).
-  TeamSender(const ConceptualModel& model, double period);
+  /// `team.send_threshold` (m; 0: periodic only). `tolerance` (s, >= 0):
+  /// the heartbeat is due this much early, so that a caller checking once
+  /// per cycle does not slip a whole cycle on its timer's jitter (map_node:
+  /// half a MAP cycle).
+  TeamSender(const ConceptualModel& model, double period, double tolerance = 0.0);
   /// True when `tracks` (WorldModel::local_tracks at `now`) should be sent
   /// now: the period has passed since the last send, or a track's estimate
   /// is farther than the threshold from the prediction of its last sent
@@ -36,7 +39,8 @@ class TeamSender {
  private:
   bool deviates(double now, const std::vector<RemoteTrack>& tracks) const;
   const ConceptualModel& model_;
-  double period_, threshold_;
+  bool heartbeat(double now) const { return now - last_ >= period_ - tolerance_ - 1e-9; }
+  double period_, tolerance_, threshold_;
   double last_ = -1e300;
   std::map<std::uint32_t, Estimate> sent_;  // by anchor id
   std::uint64_t periodic_ = 0, on_deviation_ = 0;
