@@ -7,18 +7,19 @@
 namespace mrt::map {
 
 TeamSender::TeamSender(const ConceptualModel& model, double period, double tolerance)
-    : model_(model), period_(period), tolerance_(tolerance), threshold_(model.team().send_threshold) {
+    : model_(model), period_(period), tolerance_(tolerance) {
   if (!(period > 0.0) || !(tolerance >= 0.0 && tolerance < period))
     throw std::invalid_argument("TeamSender: expected period > 0 and 0 <= tolerance < period");
 }
 
 bool TeamSender::deviates(double now, const std::vector<RemoteTrack>& tracks) const {
-  if (!(threshold_ > 0.0)) return false;
+  const double threshold = model_.team().send_threshold;
+  if (!(threshold > 0.0)) return false;
   for (const RemoteTrack& t : tracks) {
     const auto s = sent_.find(t.id);
     if (s == sent_.end()) return true;
     const Estimate dead_reckoned = predict(s->second, model_.at(t.class_index), now);
-    if ((dead_reckoned.x.head<2>() - t.estimate.x.head<2>()).norm() > threshold_) return true;
+    if ((dead_reckoned.x.head<2>() - t.estimate.x.head<2>()).norm() > threshold) return true;
   }
   return false;
 }

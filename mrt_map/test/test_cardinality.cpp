@@ -41,6 +41,13 @@ const Anchor* nearest(const Tracker& tr, double x, double y) {
     if (!best || (a.fused.x.head<2>() - Vec2(x, y)).norm() < (best->fused.x.head<2>() - Vec2(x, y)).norm()) best = &a;
   return best;
 }
+// Objects at (0, 0) and (x2, 0), both seen every 0.1 s from 0 to 1 s, then
+// only the second until (not including) `until` s.
+void see_both_then_lose_first(Tracker& tr, double x2, double until) {
+  int k = 0;
+  for (; k <= 10; ++k) tr.cycle(0.1 * k, {obs(0, 0, 0.1 * k), obs(x2, 0, 0.1 * k)}, {});
+  for (; 0.1 * k < until - 1e-9; ++k) tr.cycle(0.1 * k, {obs(x2, 0, 0.1 * k)}, {});
+}
 }  // namespace
 
 TEST(Cardinality, ParsesAndIsNotInherited) {
@@ -173,9 +180,7 @@ TEST(Cardinality, LostAnchorClaimedOutsideTheGate) {
 TEST(Cardinality, LostAnchorIsNotCoalescedIntoASeenOne) {
   const ConceptualModel m = model(2);
   Tracker tr(m);
-  int k = 0;
-  for (; k <= 10; ++k) tr.cycle(0.1 * k, {obs(0, 0, 0.1 * k), obs(0.6, 0, 0.1 * k)}, {});
-  for (; k < 40; ++k) tr.cycle(0.1 * k, {obs(0.6, 0, 0.1 * k)}, {});
+  see_both_then_lose_first(tr, 0.6, 4.0);
   ASSERT_EQ(tr.anchors().size(), 2u);
   const Anchor* lost = nearest(tr, 0, 0);
   EXPECT_EQ(lost->id, 1u);
@@ -200,9 +205,7 @@ TEST(Cardinality, LostAnchorIsNotCoalescedIntoASeenOne) {
 TEST(Cardinality, DetectionInsideATrackedGateDoesNotBringBackALostAnchor) {
   const ConceptualModel m = model(2);
   Tracker tr(m);
-  int k = 0;
-  for (; k <= 10; ++k) tr.cycle(0.1 * k, {obs(0, 0, 0.1 * k), obs(1, 0, 0.1 * k)}, {});
-  for (; k < 30; ++k) tr.cycle(0.1 * k, {obs(1, 0, 0.1 * k)}, {});
+  see_both_then_lose_first(tr, 1.0, 3.0);
   Observation twin = obs(1.02, 0, 3.0);
   twin.sensors = {"r1/cam2"};
   tr.cycle(3.0, {obs(1, 0, 3.0), twin}, {});

@@ -55,7 +55,8 @@ TEST(TeamSender, SendsOnTheHeartbeatAndWhenTheTeammatesPredictionIsOff) {
 }
 
 TEST(TeamSender, ThresholdZeroIsPeriodicOnly) {
-  TeamSender s(model(0.0), 0.1);
+  const ConceptualModel m = model(0.0);  // outlives the sender (held by reference)
+  TeamSender s(m, 0.1);
   s.sent(0.0, {track(1, 0.0, 1.0, 0.0)});
   EXPECT_FALSE(s.due(0.05, {track(1, 5.0, 1.0, 0.05), track(2, 0.0, 0.0, 0.05)}));
   EXPECT_TRUE(s.due(0.1, {}));
@@ -67,8 +68,9 @@ TEST(TeamSender, ThresholdZeroIsPeriodicOnly) {
 // are 0.0999 s. Without a tolerance the 10 Hz heartbeat slips to every 4th
 // cycle (7.5 Hz); with half a cycle it keeps every 3rd.
 TEST(TeamSender, HeartbeatToleratesTimerJitter) {
+  const ConceptualModel m = model(0.0);
   for (const double tolerance : {0.0, 0.5 / 30.0}) {
-    TeamSender s(model(0.0), 0.1, tolerance);
+    TeamSender s(m, 0.1, tolerance);
     int sends = 0;
     for (int k = 0; k < 300; ++k) {
       const double now = k * (0.0999 / 3.0);

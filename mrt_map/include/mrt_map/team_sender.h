@@ -19,6 +19,7 @@ namespace mrt::map {
 
 class TeamSender {
  public:
+  /// `model` is held by reference (it must outlive the sender).
   /// `period` (s, > 0): the heartbeat; the threshold is the model's
   /// `team.send_threshold` (m; 0: periodic only). `tolerance` (s, >= 0):
   /// the heartbeat is due this much early, so that a caller checking once
@@ -40,7 +41,7 @@ class TeamSender {
   bool deviates(double now, const std::vector<RemoteTrack>& tracks) const;
   const ConceptualModel& model_;
   bool heartbeat(double now) const { return now - last_ >= period_ - tolerance_ - 1e-9; }
-  double period_, tolerance_, threshold_;
+  double period_, tolerance_;
   double last_ = -1e300;
   std::map<std::uint32_t, Estimate> sent_;  // by anchor id
   std::uint64_t periodic_ = 0, on_deviation_ = 0;
