@@ -80,7 +80,7 @@ class ModelLoader {
       if (b.IsNull()) continue;
       r_.map(b, what, {"parent", "attributes", "motion", "accel_noise", "init_speed_sigma", "default_sigma",
                        "refined_by", "velocity_tau", "drop_after", "max_sigma", "max_count",
-                       "imm"});
+                       "imm", "fusion", "maneuver", "keep_teammate_link"});
       if (const YAML::Node p = b["parent"]) {
         const int pi = m_.find(r_.string(p, "parent"));
         if (pi < 0) r_.fail(p, "unknown parent class '" + p.Scalar() + "' of '" + what + "'");
@@ -129,6 +129,9 @@ class ModelLoader {
       c.drop_after = p.drop_after;
       c.max_sigma = p.max_sigma;
       c.imm = p.imm;
+      c.fusion = p.fusion;
+      c.impulse_maneuver = p.impulse_maneuver;
+      c.keep_link = p.keep_link;
     }
     if (b.IsNull()) return;
     if (const YAML::Node mo = b["motion"]) {
@@ -144,6 +147,19 @@ class ModelLoader {
     c.drop_after = r_.non_negative(b, "drop_after", c.drop_after);
     c.max_sigma = r_.non_negative(b, "max_sigma", c.max_sigma);
     if (const YAML::Node im = b["imm"]) imm(c, im);
+    if (const YAML::Node f = b["fusion"]) {
+      const std::string s = r_.string(f, "fusion");
+      if (s == "team") c.fusion = ClassDef::Fusion::kTeam;
+      else if (s == "covariance_intersection") c.fusion = ClassDef::Fusion::kCovarianceIntersection;
+      else if (s == "independent") c.fusion = ClassDef::Fusion::kIndependent;
+      else r_.fail(f, "expected 'team', 'covariance_intersection' or 'independent' for 'fusion' of '" + c.name + "'");
+    }
+    if (const YAML::Node mv = b["maneuver"]) {
+      const std::string s = r_.string(mv, "maneuver");
+      if (s != "reset" && s != "impulse") r_.fail(mv, "expected 'reset' or 'impulse' for 'maneuver' of '" + c.name + "'");
+      c.impulse_maneuver = s == "impulse";
+    }
+    c.keep_link = r_.non_negative(b, "keep_teammate_link", c.keep_link);
     if (const YAML::Node mc = b["max_count"]) {
       const double v = r_.non_negative(b, "max_count", 0.0);
       if (v != std::floor(v) || v > 1000.0) r_.fail(mc, "expected a whole number <= 1000 for 'max_count'");

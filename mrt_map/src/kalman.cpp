@@ -91,6 +91,21 @@ void update(Estimate& e, const Vec2& z, const Mat2& R) {
   e.P = IKH * e.P * IKH.transpose() + K * R * K.transpose();
 }
 
+void maneuver(Estimate& e, const ClassDef& c, double dt, const Mat2& R) {
+  const double s2 = c.init_speed_sigma * c.init_speed_sigma;
+  if (c.impulse_maneuver) {
+    e.P.topLeftCorner<2, 2>() += dt * dt * s2 * Mat2::Identity();
+    e.P.block<2, 2>(0, 2) += dt * s2 * Mat2::Identity();
+    e.P.block<2, 2>(2, 0) += dt * s2 * Mat2::Identity();
+    e.P.block<2, 2>(2, 2) += s2 * Mat2::Identity();
+    return;
+  }
+  e.P.block<2, 2>(2, 2) = s2 * Mat2::Identity();
+  e.P.block<2, 2>(0, 2).setZero();
+  e.P.block<2, 2>(2, 0).setZero();
+  e.P.topLeftCorner<2, 2>() += R;
+}
+
 void fuse_independent(Vec2& z, Mat2& R, const Vec2& z2, const Mat2& R2) {
   const Mat2 I1 = R.inverse(), I2 = R2.inverse();
   const Mat2 P = (I1 + I2).inverse();

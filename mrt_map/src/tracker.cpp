@@ -236,15 +236,9 @@ void Tracker::apply_local(double now, Anchor& anchor, const Observation& o) {
     a->local_hits = 0;
     if (a->hits == 0) a->fused = a->local;
   } else {
-    if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate) {
-      // Manoeuvre: forget the velocity, keep the symbol (in every model).
-      for (Estimate* e : {&a->local, &a->imm.model[0], &a->imm.model[1]}) {
-        e->P.block<2, 2>(2, 2) = c.init_speed_sigma * c.init_speed_sigma * Mat2::Identity();
-        e->P.block<2, 2>(0, 2).setZero();
-        e->P.block<2, 2>(2, 0).setZero();
-        e->P.topLeftCorner<2, 2>() += o.R;
-      }
-    }
+    if (mahalanobis2(a->local, o.z, o.R) > model_.tracker().gate)  // manoeuvre: keep the symbol
+      for (Estimate* e : {&a->local, &a->imm.model[0], &a->imm.model[1]})
+        maneuver(*e, c, std::max(0.0, now - a->local_last_seen), o.R);
     if (a->has_imm) {
       imm_update(a->imm, o.z, o.R);
       a->local = imm_combine(a->imm);
@@ -335,17 +329,22 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
         const Anchor& a = anchors_[c];
         if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
         const Vec2 z = tracks[r]->estimate.x.head<2>();
-        if ((z - a.fused.x.head<2>()).norm() > radius &&
-            outside_gate(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>(), gate))
+        const double off = (z - a.fused.x.head<2>()).norm();
+        auto linked = [&] {
+          const auto link = a.remote_ids.find(robot);
+          return link != a.remote_ids.end() && link->second == tracks[r]->id;
+        };
+        // The teammate's own symbol says it is the same object, however far
+        // our estimate is (a kick it saw first): keep_teammate_link.
+        if (off <= model_.at(a.class_index).keep_link && linked()) {
+          cost[r][c] = 0.0;
           continue;
-        const double d = mahalanobis2(a.fused, tracks[r]->estimate.x.head<2>(),
-                                      tracks[r]->estimate.P.topLeftCorner<2, 2>());
-        const bool manoeuvre = a.status != AnchorStatus::kTentative &&
-                               (tracks[r]->estimate.x.head<2>() - a.fused.x.head<2>()).norm() <= radius;
+        }
+        if (off > radius && outside_gate(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>(), gate)) continue;
+        const double d = mahalanobis2(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>());
+        const bool manoeuvre = a.status != AnchorStatus::kTentative && off <= radius;
         if (d > gate && !manoeuvre) continue;
-        const auto link = a.remote_ids.find(robot);
-        const bool sticky = link != a.remote_ids.end() && link->second == tracks[r]->id;
-        cost[r][c] = sticky ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
+        cost[r][c] = linked() ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
       }
     keep_lost_off_held(cost, gate);
     const std::vector<int> match = assign(cost, gate);
@@ -390,8 +389,10 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
 }
 
 void Tracker::fuse(double now) {
-  const bool ci = model_.team().covariance_intersection;
   for (Anchor& a : anchors_) {
+    const ClassDef::Fusion rule = model_.at(a.class_index).fusion;
+    const bool ci = rule == ClassDef::Fusion::kTeam ? model_.team().covariance_intersection
+                                                    : rule == ClassDef::Fusion::kCovarianceIntersection;
     std::vector<const Estimate*> parts;
     if (a.has_local) parts.push_back(&a.local);
     for (const auto& [robot, t] : a.remote) parts.push_back(&t.estimate);

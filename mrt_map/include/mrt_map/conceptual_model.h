@@ -53,6 +53,13 @@ struct ClassDef {
   double drop_after = 0.0;       // s, per-class tracker.drop_after (0 = the tracker's)
   double max_sigma = 0.0;        // m, per-class tracker.max_sigma (0 = the tracker's)
   ImmDef imm;                    // CV only: the own filter is an IMM of two CV models (class `imm:`)
+  /// Team fusion of the class's anchors (`fusion:`): team.fusion's rule, or its own.
+  enum class Fusion { kTeam, kCovarianceIntersection, kIndependent };
+  Fusion fusion = Fusion::kTeam;
+  bool impulse_maneuver = false; // `maneuver: impulse`: a manoeuvre is a velocity jump (a kick)
+                                 // at the start of the last interval (kalman.h, maneuver)
+  double keep_link = 0.0;        // m, `keep_teammate_link`: a teammate's track stays on the
+                                 // anchor it was linked to beyond the gate, up to this far
   bool refined_by_teammate_pose = false;  // a Robot becomes this class near a teammate
   int max_count = 0;             // cardinality: at most this many objects of the class
                                  // (and its subclasses) exist; 0 = unknown. Not inherited.

@@ -36,6 +36,15 @@ bool outside_gate(const Estimate& e, const Vec2& z, const Mat2& R, double gate);
 /// Kalman update with a position measurement.
 void update(Estimate& e, const Vec2& z, const Mat2& R);
 
+/// A manoeuvre found at an update `dt` after the previous one (the
+/// observation beyond the gate of the predicted `e`, covariance R). Class
+/// `maneuver: impulse` (a kick): a velocity jump of sigma s =
+/// init_speed_sigma per axis at the start of the interval, carried to now,
+/// P += [dt^2 s^2 I, dt s^2 I; dt s^2 I, s^2 I], so the update takes the
+/// innovation into the velocity too. `reset` (default): the velocity is
+/// forgotten (P_vv = s^2 I, uncorrelated) and P_pp += R.
+void maneuver(Estimate& e, const ClassDef& c, double dt, const Mat2& R);
+
 /// Information fusion of two independent position measurements.
 void fuse_independent(Vec2& z, Mat2& R, const Vec2& z2, const Mat2& R2);
 
