@@ -21,6 +21,11 @@ void refine_class(const ConceptualModel& m, Anchor& a, int c, double degree) {
   }
 }
 
+bool linked(const Anchor& a, const std::string& robot, std::uint32_t id) {
+  const auto link = a.remote_ids.find(robot);
+  return link != a.remote_ids.end() && link->second == id;
+}
+
 double position_sigma_max(const Mat4& P) { return std::sqrt(principal_axes(P.topLeftCorner<2, 2>()).major); }
 }  // namespace
 
@@ -330,13 +335,8 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
         if (!model_.compatible(tracks[r]->class_index, a.class_index)) continue;
         const Vec2 z = tracks[r]->estimate.x.head<2>();
         const double off = (z - a.fused.x.head<2>()).norm();
-        auto linked = [&] {
-          const auto link = a.remote_ids.find(robot);
-          return link != a.remote_ids.end() && link->second == tracks[r]->id;
-        };
-        // The teammate's own symbol says it is the same object, however far
-        // our estimate is (a kick it saw first): keep_teammate_link.
-        if (off <= model_.at(a.class_index).keep_link && linked()) {
+        // keep_teammate_link: its own symbol says it is this object, however far (a kick it saw first).
+        if (off <= model_.at(a.class_index).keep_link && linked(a, robot, tracks[r]->id)) {
           cost[r][c] = 0.0;
           continue;
         }
@@ -344,7 +344,7 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
         const double d = mahalanobis2(a.fused, z, tracks[r]->estimate.P.topLeftCorner<2, 2>());
         const bool manoeuvre = a.status != AnchorStatus::kTentative && off <= radius;
         if (d > gate && !manoeuvre) continue;
-        cost[r][c] = linked() ? 0.0 : std::min(d, gate);  // keep last cycle's link while it gates
+        cost[r][c] = linked(a, robot, tracks[r]->id) ? 0.0 : std::min(d, gate);  // sticky while it gates
       }
     keep_lost_off_held(cost, gate);
     const std::vector<int> match = assign(cost, gate);
@@ -390,7 +390,7 @@ void Tracker::associate_remote(double now, std::vector<RemoteTrack>& remote) {
 
 void Tracker::fuse(double now) {
   for (Anchor& a : anchors_) {
-    const ClassDef::Fusion rule = model_.at(a.class_index).fusion;
+    const auto rule = model_.at(a.class_index).fusion;
     const bool ci = rule == ClassDef::Fusion::kTeam ? model_.team().covariance_intersection
                                                     : rule == ClassDef::Fusion::kCovarianceIntersection;
     std::vector<const Estimate*> parts;
