@@ -2,8 +2,8 @@
 // sensors of one robot that belong to the same real object are joined
 // (class compatibility + Mahalanobis gating, information fusion: the
 // sensors are independent); teammates' anchors are brought to the current
-// time (latency compensation) before the Tracker fuses them by covariance
-// intersection.
+// time (latency compensation) before the Tracker fuses them (covariance
+// intersection, or information fusion per the class's `fusion`).
 #pragma once
 
 #include <vector>

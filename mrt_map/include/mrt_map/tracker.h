@@ -2,8 +2,8 @@
 // a Kalman filter per anchor on the robot's own observations, the anchor
 // life cycle (tentative -> confirmed -> coasting -> dropped), global
 // nearest neighbour association on gated Mahalanobis costs, and the team
-// estimate: the covariance intersection of the own filter and the
-// teammates' anchors linked to it.
+// estimate: the covariance intersection (or, per the class's `fusion`, the
+// information fusion) of the own filter and the teammates' anchors linked to it.
 #pragma once
 
 #include <cstdint>
