@@ -159,11 +159,13 @@ class MapNode {
     if (marker_pub_.getNumSubscribers() > 0) marker_pub_.publish(conv::markers(world_, opt_.world_frame, now));
     // The team exchange: on the heartbeat (team_rate) or on a deviation
     // (the model's team.send_threshold).
-    const std::vector<mrt::map::RemoteTrack> tracks = world_.local_tracks();
-    if ((team_pub_ || dcdt_pub_) && sender_.due(now.toSec(), tracks)) {
-      if (team_pub_) team_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, true));
-      if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, opt_.world_frame, now));
-      sender_.sent(now.toSec(), tracks);
+    if (team_pub_ || dcdt_pub_) {
+      const std::vector<mrt::map::RemoteTrack> tracks = world_.local_tracks();
+      if (sender_.due(now.toSec(), tracks)) {
+        if (team_pub_) team_pub_.publish(conv::to_msg(world_, tracks, opt_.world_frame, now));
+        if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, tracks, opt_.world_frame, now));
+        sender_.sent(now.toSec(), tracks);
+      }
     }
     diagnostics_.update();
   }

@@ -75,7 +75,9 @@ bool from_msg(const mrt_msgs::Anchor& a, const ConceptualModel& m, const ros::Ti
   return Eigen::LLT<Mat4>(P).info() == Eigen::Success;
 }
 
-mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only) {
+namespace {
+// The message without anchors: robot, pose, SCARE's parameters.
+mrt_msgs::WorldModel model_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only) {
   mrt_msgs::WorldModel out;
   out.header.stamp = stamp;
   out.header.frame_id = frame;
@@ -86,12 +88,6 @@ mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const
   out.robot_y = p.y;
   out.robot_theta = p.theta;
   out.robot_covariance = {p.cov(0, 0), p.cov(0, 1), p.cov(1, 0), p.cov(1, 1)};
-  const double now = stamp.toSec();
-  if (local_only) {
-    for (const RemoteTrack& t : w.local_tracks()) out.anchors.push_back(to_msg(t, w.model()));
-  } else {
-    for (const Anchor& a : w.tracker().anchors()) out.anchors.push_back(to_msg(a, w.model(), w.tracker().reliability(a, now)));
-  }
   for (const auto& [name, d] : w.parameters()) {
     mrt_msgs::CrispData c;
     c.name = name;
@@ -99,6 +95,22 @@ mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const
     c.reliability = d.reliability;
     out.parameters.push_back(c);
   }
+  return out;
+}
+}  // namespace
+
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only) {
+  if (local_only) return to_msg(w, w.local_tracks(), frame, stamp);
+  mrt_msgs::WorldModel out = model_msg(w, frame, stamp, false);
+  const double now = stamp.toSec();
+  for (const Anchor& a : w.tracker().anchors()) out.anchors.push_back(to_msg(a, w.model(), w.tracker().reliability(a, now)));
+  return out;
+}
+
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
+                            const ros::Time& stamp) {
+  mrt_msgs::WorldModel out = model_msg(w, frame, stamp, true);
+  for (const RemoteTrack& t : tracks) out.anchors.push_back(to_msg(t, w.model()));
   return out;
 }
 
@@ -199,12 +211,17 @@ mrt_msgs::Attribute attr(const std::string& name, double value, double variabili
 }  // namespace
 
 mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp) {
+  return to_dcdt_percept(w, w.local_tracks(), frame, stamp);
+}
+
+mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
+                                  const ros::Time& stamp) {
   mrt_msgs::Percept p;
   p.header.stamp = stamp;
   p.header.frame_id = frame;
   p.sensor = "map";
   p.robot = w.options().robot;
-  for (const RemoteTrack& t : w.local_tracks()) {
+  for (const RemoteTrack& t : tracks) {
     mrt_msgs::PerceptObject o;
     o.name = std::to_string(t.id);
     o.membership_class = w.model().at(t.class_index).name;

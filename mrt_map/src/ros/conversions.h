@@ -28,6 +28,9 @@ bool from_msg(const mrt_msgs::Anchor& a, const ConceptualModel& m, const ros::Ti
 
 /// The team model (local_only = false) or the team exchange (true).
 mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only);
+/// The team exchange of `tracks` (w.local_tracks(), computed by the caller).
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
+                            const ros::Time& stamp);
 
 mrt_msgs::CrispDataArray to_msg(const std::vector<CrispDatum>& data, const ros::Time& stamp);
 
@@ -39,6 +42,9 @@ visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& 
 /// with one object per own track: name = id, class, attributes x, y, vx,
 /// vy (variability = sigma), cov_xy, last_seen_age, degree.
 mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
+/// The same of `tracks` (w.local_tracks(), computed by the caller).
+mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
+                                  const ros::Time& stamp);
 /// The inverse, for a legacy teammate's anchors; objects that do not parse
 /// are skipped.
 std::vector<RemoteTrack> from_dcdt_percept(const mrt_msgs::Percept& p, const ConceptualModel& m);
