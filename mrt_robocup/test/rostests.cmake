@@ -19,9 +19,10 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/stop.test DEPENDENCIES ${PROJECT_NAME}_stop_rostest)
   # Removal: a ball job taken over within drop_timeout + one cycle + 0.1 s
   # of the removed robot's last message, play continuing (README "Bringup
-  # rostests"). A removal at which no ball job was opportune any more (the
-  # ball out of play) says nothing; the test then removes the next ball-job
-  # holder (three removals at most).
+  # rostests"); a robot is removed only while a survivor sees the ball. A
+  # removal at which no ball job was opportune any more (the ball out of
+  # play) says nothing; the test then removes the next ball-job holder (two
+  # removals at most).
   add_rostest(test/removal.test DEPENDENCIES ${PROJECT_NAME}_removal_rostest)
   # The scoring criterion (issue 21: the team scores within 120 simulated
   # seconds in at least 4 of 5 seeded runs) as one case: score_seeds.py
