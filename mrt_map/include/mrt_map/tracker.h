@@ -55,12 +55,14 @@ class Tracker {
 
  private:
   void associate_local(double now, const std::vector<Observation>& obs);
-  void associate_remote(double now, std::vector<RemoteTrack>& remote);
-  void fuse(double now);
+  void associate_remote(double now, std::vector<RemoteTrack>& remote);  // tracker_team.cpp
+  void fuse(double now);                                                // tracker_team.cpp
   void coalesce();
   void life_cycle(double now);
   void refine_teammates(double now);
   Anchor& create(double now, int class_index, double degree);
+  /// Adopts a more specific class (a Robot seen as an Opponent).
+  void refine_class(Anchor& a, int c, double degree) const;
   /// The coasting anchor (not supported this cycle, compatible class) nearest
   /// to z within tracker.reid_gate (squared Mahalanobis), or null.
   Anchor* reidentify(int class_index, const Vec2& z, const Mat2& R);
