@@ -154,7 +154,7 @@ class MapNode {
     mrt::map::RobotPose pose;
     if (pose_at(opt_.base_frame, ros::Time(0), pose)) world_.set_robot_pose(pose, now.toSec());
     world_.update(now.toSec());
-    model_pub_.publish(conv::to_msg(world_, opt_.world_frame, now, false));
+    model_pub_.publish(conv::to_msg(world_, opt_.world_frame, now));
     crisp_pub_.publish(conv::to_msg(world_.crisp(now.toSec()), now));
     if (marker_pub_.getNumSubscribers() > 0) marker_pub_.publish(conv::markers(world_, opt_.world_frame, now));
     // The team exchange: on the heartbeat (team_rate) or on a deviation

@@ -35,7 +35,7 @@ TEST(Conversions, OwnTracksRoundTrip) {
   ASSERT_EQ(own.size(), 1u);
   const ros::Time stamp(10.1);
   // Through the team topic: every field back, full covariance.
-  const mrt_msgs::WorldModel msg = ros_conv::to_msg(w, "map", stamp, true);
+  const mrt_msgs::WorldModel msg = ros_conv::to_msg(w, own, "map", stamp);
   ASSERT_EQ(msg.anchors.size(), 1u);
   EXPECT_TRUE(msg.local_only);
   EXPECT_EQ(msg.robot, "r1");
@@ -56,7 +56,7 @@ TEST(Conversions, OwnTracksRoundTrip) {
   EXPECT_FALSE(ros_conv::from_msg(bad, m, stamp, back));
   // Through the DCDT form: position, velocity, their variances and the x-y
   // covariance survive (position-velocity correlations do not).
-  const mrt_msgs::Percept p = ros_conv::to_dcdt_percept(w, "map", stamp);
+  const mrt_msgs::Percept p = ros_conv::to_dcdt_percept(w, own, "map", stamp);
   ASSERT_EQ(p.objects.size(), 1u);
   EXPECT_EQ(p.sensor, "map");
   const auto legacy = ros_conv::from_dcdt_percept(p, m);

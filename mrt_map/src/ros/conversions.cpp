@@ -99,8 +99,7 @@ mrt_msgs::WorldModel model_msg(const WorldModel& w, const std::string& frame, co
 }
 }  // namespace
 
-mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only) {
-  if (local_only) return to_msg(w, w.local_tracks(), frame, stamp);
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp) {
   mrt_msgs::WorldModel out = model_msg(w, frame, stamp, false);
   const double now = stamp.toSec();
   for (const Anchor& a : w.tracker().anchors()) out.anchors.push_back(to_msg(a, w.model(), w.tracker().reliability(a, now)));
@@ -209,10 +208,6 @@ mrt_msgs::Attribute attr(const std::string& name, double value, double variabili
   return a;
 }
 }  // namespace
-
-mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp) {
-  return to_dcdt_percept(w, w.local_tracks(), frame, stamp);
-}
 
 mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
                                   const ros::Time& stamp) {

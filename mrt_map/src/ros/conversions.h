@@ -26,9 +26,9 @@ mrt_msgs::Anchor to_msg(const RemoteTrack& t, const ConceptualModel& m);
 /// not finite.
 bool from_msg(const mrt_msgs::Anchor& a, const ConceptualModel& m, const ros::Time& stamp, RemoteTrack& out);
 
-/// The team model (local_only = false) or the team exchange (true).
-mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp, bool local_only);
-/// The team exchange of `tracks` (w.local_tracks(), computed by the caller).
+/// The team model: every anchor, fused (local_only false).
+mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
+/// The team exchange (local_only true): `tracks`, the caller's w.local_tracks().
 mrt_msgs::WorldModel to_msg(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
                             const ros::Time& stamp);
 
@@ -40,9 +40,8 @@ visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& 
 
 /// DCDT form: a Percept (sensor "map", robot = producer, frame = world)
 /// with one object per own track: name = id, class, attributes x, y, vx,
-/// vy (variability = sigma), cov_xy, last_seen_age, degree.
-mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
-/// The same of `tracks` (w.local_tracks(), computed by the caller).
+/// vy (variability = sigma), cov_xy, last_seen_age, degree; `tracks`:
+/// the caller's w.local_tracks().
 mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
                                   const ros::Time& stamp);
 /// The inverse, for a legacy teammate's anchors; objects that do not parse
