@@ -1,6 +1,6 @@
 // Replays a fixed corpus through a libFuzzer target's LLVMFuzzerTestOneInput
 // so that every build (gcc included) compiles and runs the harness: the
-// README's golden frames, their concatenation, then a deterministic corpus
+// doc/protocol.md's golden frames, their concatenation, then a deterministic corpus
 // of corrupted variants (seeded RNG, bounded size and count). The harness
 // checks its own invariants (__builtin_trap on a violation, which fails this
 // test); linked once with fuzz/fuzz_decoder.cpp and once with
@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 namespace {
 
-// The "Example frames" table of the package README, typed from it.
+// The "Example frames" table of doc/protocol.md, typed from it.
 const char* const kGolden[] = {
     "A5 00 05 00 69 33",
     "A5 00 07 01 2A 45",

@@ -255,7 +255,7 @@ TEST_F(Airboard, CorruptedLineAppliesNoBogusSetPoint) {
               on_target, on_ramp, decreases, zero, restarts, restarts_at_target, last.board_frames_bad,
               static_cast<unsigned long>(last.frames_good),
               static_cast<unsigned long>(last.frames_bad), last.watchdog_trips, dist);
-  // Liveness only: checked 19-byte commands survive 0.9^19 = 13.5 % (README).
+  // Liveness only: checked 19-byte commands survive 0.9^19 = 13.5 % (doc/protocol.md).
   EXPECT_GT(on_target, 0u);
   // After a watchdog trip the ramp restarts from 0: the board's first
   // set-point is a ramp step, unless the command it applies was already on its

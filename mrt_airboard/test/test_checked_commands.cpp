@@ -26,7 +26,7 @@ void receive(Firmware& fw, const std::vector<uint8_t>& b) {
 }  // namespace
 
 // Golden frame, computed with Python's zlib.crc32 (CRC-32/ISO-HDLC) over
-// 01 07 02 DC 05 00 00 30 F8 FF FF = 0x9073D911, and the README's bit-by-bit
+// 01 07 02 DC 05 00 00 30 F8 FF FF = 0x9073D911, and doc/protocol.md's bit-by-bit
 // CRC-16 over LEN .. trailer = 0x64DA.
 TEST(CheckedCommands, GoldenFrameAndRoundTrip) {
   const auto b = encode_frame(make_set_speed(7, {1.5, -2.0}, true));

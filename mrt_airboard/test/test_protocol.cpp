@@ -24,8 +24,8 @@ TEST(Crc16, CheckValue) {
   EXPECT_EQ(crc16_ccitt(nullptr, 0), 0xFFFF);
 }
 
-// Golden frames, written by hand from the README's byte tables (CRC computed
-// with the README's bit-by-bit algorithm, independently of this code).
+// Golden frames, written by hand from doc/protocol.md's byte tables (CRC computed
+// with doc/protocol.md's bit-by-bit algorithm, independently of this code).
 TEST(Golden, Heartbeat) {
   EXPECT_EQ(encode_frame(make_simple(proto::kHeartbeat, 0)), (Bytes{0xA5, 0x00, 0x05, 0x00, 0x69, 0x33}));
   EXPECT_EQ(encode_frame(make_simple(proto::kGetInfo, 1)), (Bytes{0xA5, 0x00, 0x07, 0x01, 0x2A, 0x45}));
@@ -85,7 +85,7 @@ TEST(Golden, State) {
   EXPECT_EQ(r.motors[0].status, 0x05);
 }
 
-// The compact format for noisy lines (README: SHORT_STATE, COUNTERS).
+// The compact format for noisy lines (doc/protocol.md: SHORT_STATE, COUNTERS).
 TEST(Golden, CompactFormat) {
   const Bytes stream{0xA5, 0x03, 0x06, 0x02, 0x03, 0x00, 0x01, 0x6C, 0xA9};
   EXPECT_EQ(encode_frame(make_set_stream(2, 3, proto::kFormatCompact)), stream);

@@ -1,4 +1,4 @@
-// Several files in one BrianConfigs.ini slot (README, "Several files a
+// Several files in one BrianConfigs.ini slot (doc/formats.md, "Several files a
 // slot"): the union is loaded, every message names the file and line the
 // definition came from, and a name defined in two files names both places.
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // MRT message type numbers.
 //
 // This header is the ONLY place the legacy names live: every method here is a
-// thin inline forwarder to the snake_case API of mrt_dcdt (README "Naming").
+// thin inline forwarder to the snake_case API of mrt_dcdt (doc/api.md "Naming").
 // New code uses mrt::dcdt::Agora / Member / Msg directly.
 #pragma once
 

@@ -1,7 +1,7 @@
 // Channel implementations (manual's LinkRx / LinkTx): `ip` channels (a
 // StreamLink over TCP for guaranteed messages and big ones, a UdpLink for the
 // rest) and stream channels (serial lines, Finder connections). The links
-// themselves are in stream_link.cpp and udp_link.cpp. See README "Wire protocol".
+// themselves are in stream_link.cpp and udp_link.cpp. See doc/protocol.md "Wire protocol".
 #include <arpa/inet.h>
 #include <unistd.h>
 

@@ -33,7 +33,7 @@ struct InnerLinkOptions {
   size_t queue_bytes = 8u << 20;      ///< per peer
 };
 
-/// Fragment header of an inner-link datagram (README "Inner links").
+/// Fragment header of an inner-link datagram (doc/protocol.md "Inner links").
 constexpr size_t kInnerFragmentHeader = 32;
 constexpr size_t kInnerFragmentData = 60 * 1024;
 

@@ -1,6 +1,6 @@
 // What the link implementations share (internal): the outbound queue, capped
-// in bytes, and the per-link counters. See README "Wire protocol" and
-// "Guarantees under faults".
+// in bytes, and the per-link counters. See doc/protocol.md "Wire protocol" and
+// doc/faults.md ("Guarantees under faults").
 #pragma once
 
 #include <atomic>

@@ -1,4 +1,4 @@
-// StreamLink: see stream_link.h and README "Wire protocol".
+// StreamLink: see stream_link.h and doc/protocol.md "Wire protocol".
 #include "stream_link.h"
 
 #include <poll.h>

@@ -1,4 +1,4 @@
-// UdpLink: see udp_link.h and README "Wire protocol".
+// UdpLink: see udp_link.h and doc/protocol.md "Wire protocol".
 #include "udp_link.h"
 
 #include <poll.h>

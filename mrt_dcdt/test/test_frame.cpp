@@ -40,7 +40,7 @@ uint32_t Be32(const std::vector<uint8_t>& b, size_t at) {
 
 TEST(Frame, MsgGoldenBytes) {
   auto b = encode_msg(Sample(), 9);
-  // Written by hand from the README tables (version 2).
+  // Written by hand from the doc/protocol.md tables (version 2).
   const std::vector<uint8_t> header = {
       0x44, 0x43, 0x02, 0x01,  // magic "DC", version 2, kind MSG
       0x00, 0x00, 0x00, 54};   // body length 52 + 2

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   // followme_bench [WORLD [CONFIG_DIR]]: mrt_sim's museum and this package's config by default.
   const std::string config = argc > 2 ? argv[2] : MRT_FOLLOWME_ROOT "/config";
   mrt::followme::FollowMeLoopOptions o;
-  o.world = argc > 1 ? argv[1] : MRT_SIM_WORLDS "/museum.yaml";
+  o.world = argc > 1 ? argv[1] : MRT_WORLDS_DIR "/museum.yaml";
   o.config = config + "/followme.yaml";
   o.brian = config + "/brian/BrianConfigs.ini";
   using Clock = std::chrono::steady_clock;

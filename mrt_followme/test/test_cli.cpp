@@ -32,7 +32,7 @@ TEST(FollowMeRunCli, UsageErrorsExitTwo) {
 
 TEST(FollowMeRunCli, UnknownExhibitExitsTwo) {
   const std::string root = MRT_FOLLOWME_ROOT;
-  const std::string args = "--world " MRT_SIM_WORLDS "/museum.yaml --config " + root +
+  const std::string args = "--world " MRT_WORLDS_DIR "/museum.yaml --config " + root +
                            "/config/followme.yaml --brian " + root + "/config/brian/BrianConfigs.ini --tour statue,mona_lisa";
   const Output o = err(FOLLOWME_RUN, args);
   EXPECT_EQ(o.code, 2);

@@ -15,7 +15,7 @@ namespace {
 FollowMeLoopOptions options() {
   FollowMeLoopOptions o;
   const std::string root = MRT_FOLLOWME_ROOT;
-  o.world = MRT_SIM_WORLDS "/museum.yaml";
+  o.world = MRT_WORLDS_DIR "/museum.yaml";
   o.config = root + "/config/followme.yaml";
   o.brian = root + "/config/brian/BrianConfigs.ini";
   o.duration = 400.0;

@@ -6,7 +6,7 @@
 
 namespace mrt::murea {
 
-using mrt::sim::Segment;
+using mrt::world::Segment;
 
 std::optional<FeatureClass> parse_feature_class(const std::string& name) {
   for (int i = 0; i < kFeatureClassCount; ++i) {
@@ -128,21 +128,21 @@ Point2D Layer::nearest(double x, double y, bool* line, double* nx, double* ny) c
   return *best;
 }
 
-FeatureMap::FeatureMap(const mrt::sim::World& world, const MapOptions& o)
+FeatureMap::FeatureMap(const mrt::world::World& world, const MapOptions& o)
     : name_(world.name), min_x_(world.min_x), min_y_(world.min_y), max_x_(world.max_x), max_y_(world.max_y) {
   if (!(o.resolution > 0.0) || !(o.padding >= 0.0))
     throw std::invalid_argument("FeatureMap: expected resolution > 0 and padding >= 0");
   const double x0 = min_x_ - o.padding, y0 = min_y_ - o.padding;
   const double x1 = max_x_ + o.padding, y1 = max_y_ + o.padding;
   lines_ = DistanceGrid(world.field_lines, x0, y0, x1, y1, o.resolution);
-  walls_ = DistanceGrid(mrt::sim::solid_segments(world), x0, y0, x1, y1, o.resolution);
-  for (const mrt::sim::Goal& g : world.goals) {
+  walls_ = DistanceGrid(mrt::world::solid_segments(world), x0, y0, x1, y1, o.resolution);
+  for (const mrt::world::Goal& g : world.goals) {
     goals_.push_back({g.name, g.color, {g.pose.x, g.pose.y}});
-    const auto posts = mrt::sim::goal_posts(g);
+    const auto posts = mrt::world::goal_posts(g);
     goal_posts_.push_back({g.name + "_left", g.color, posts[0]});
     goal_posts_.push_back({g.name + "_right", g.color, posts[1]});
   }
-  for (const mrt::sim::Post& p : world.posts)
+  for (const mrt::world::Post& p : world.posts)
     if (p.membership_class == "Landmark") landmarks_.push_back({p.name, p.color, p.center});
 }
 

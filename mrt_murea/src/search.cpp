@@ -1,4 +1,4 @@
-// Localizer::localize: the best-first search (see README, "The search").
+// Localizer::localize: the best-first search (see doc/method.md, "The search").
 #include <chrono>
 #include <cmath>
 #include <ctime>

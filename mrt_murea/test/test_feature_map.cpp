@@ -6,9 +6,10 @@
 #include <random>
 
 #include "mrt_murea/feature_map.h"
+#include "mrt_world/world_loader.h"
 
 using namespace mrt::murea;
-using mrt::sim::Segment;
+using mrt::world::Segment;
 
 TEST(FeatureClass, NamesAsTheSimulatorsPercepts) {
   EXPECT_EQ(parse_feature_class("Line"), FeatureClass::Line);
@@ -50,7 +51,7 @@ TEST(DistanceGrid, WithinHalfSlackOfTheTruthAndLipschitzUpToSlack) {
 }
 
 TEST(FeatureMap, MslFieldLayers) {
-  const FeatureMap map(mrt::sim::load_world(MRT_MUREA_DATA "/msl_field.yaml"));
+  const FeatureMap map(mrt::world::load_world(MRT_MUREA_DATA "/msl_field.yaml"));
   EXPECT_EQ(map.points(FeatureClass::Goal).size(), 2u);
   EXPECT_EQ(map.points(FeatureClass::GoalPost).size(), 4u);
   EXPECT_EQ(map.points(FeatureClass::Landmark).size(), 4u);

@@ -1,6 +1,7 @@
-// Maps from map_server occupancy images: a hand-made 20 x 10 pixel room
-// (0.1 m pixels, origin (-1, -0.5)) written here as a PNG, its walls and
-// distances worked out by hand; malformed YAML named by file and line.
+// MUREA on a map_server map: a hand-made 20 x 10 pixel room (0.1 m pixels,
+// origin (-1, -0.5)) written here as a PNG; its walls (mrt_world's
+// occupied_walls, tested there) and the FeatureMap's distances worked out
+// by hand.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -11,9 +12,11 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_murea/feature_map.h"
 #include "mrt_murea/localizer.h"
-#include "mrt_murea/occupancy_map.h"
+#include "mrt_world/occupancy_map.h"
+#include "mrt_world/world_loader.h"
 
 using namespace mrt::murea;
+using mrt::world::load_map_world;
 
 namespace {
 
@@ -48,21 +51,10 @@ const char* kYaml =
 // Pixel (col, row) has its centre at x = -1 + (col + 0.5) 0.1, y = -0.5 +
 // (9 - row + 0.5) 0.1: the top row at y = 0.45, the bottom at -0.45, the
 // left column at x = -0.95, the right at 0.95, the pillar at (-0.45, -0.05).
-// Occupied: 2 x 20 + 2 x 8 + 1 = 57 pixels (the grey one: p = 127/255 =
-// 0.498 < 0.65, not occupied). Segments: the two full rows (2), then the
-// columns' remaining 8 pixels as vertical runs (2), the pillar alone (1).
 TEST(OccupancyMap, HandMadeRoom) {
   room_png();
-  OccupancyInfo info;
-  const mrt::sim::World w = load_occupancy_map(write("murea_room.yaml", kYaml), &info);
-  EXPECT_EQ(info.width, 20);
-  EXPECT_EQ(info.height, 10);
-  EXPECT_EQ(info.occupied, 57u);
-  EXPECT_EQ(info.segments, 5u);
-  EXPECT_DOUBLE_EQ(w.min_x, -1.0);
-  EXPECT_DOUBLE_EQ(w.max_x, 1.0);
-  EXPECT_DOUBLE_EQ(w.min_y, -0.5);
-  EXPECT_DOUBLE_EQ(w.max_y, 0.5);
+  const mrt::world::World w = load_map_world(write("murea_room.yaml", kYaml));
+  EXPECT_EQ(w.walls.size(), 5u);
   const FeatureMap map(w);
   const Layer walls = map.layer(FeatureClass::Wall, "");
   ASSERT_NE(walls.grid, nullptr);
@@ -74,43 +66,6 @@ TEST(OccupancyMap, HandMadeRoom) {
   EXPECT_NEAR(walls.grid->exact(-0.45, 0.1), 0.15, 1e-9);
   // The grid agrees within half its pixel diagonal.
   EXPECT_NEAR(walls.distance(0.5, 0.2), 0.25, walls.slack() / 2 + 1e-6);
-  // load_map tells the two formats apart by the `image` key.
-  EXPECT_EQ(load_map(::testing::TempDir() + "murea_room.yaml").walls.size(), 5u);
-  EXPECT_EQ(load_map(MRT_MUREA_DATA "/room.yaml").name, mrt::sim::load_world(MRT_MUREA_DATA "/room.yaml").name);
-}
-
-// negate: 1 reads white as occupied: the 200 - 57 - 1 = 142 white pixels.
-TEST(OccupancyMap, Negate) {
-  room_png();
-  OccupancyInfo info;
-  std::string y = kYaml;
-  y.replace(y.find("negate: 0"), 9, "negate: 1");
-  load_occupancy_map(write("murea_room_neg.yaml", y), &info);
-  EXPECT_EQ(info.occupied, 142u);
-}
-
-TEST(OccupancyMap, MalformedYamlNamesFileAndLine) {
-  room_png();
-  auto expect_error = [](const std::string& name, const std::string& text, int line, const std::string& what) {
-    const std::string path = write(name, text);
-    try {
-      load_occupancy_map(path);
-      ADD_FAILURE() << name << ": no error";
-    } catch (const mrt::common::ParseError& e) {
-      EXPECT_EQ(e.file(), path) << e.what();
-      EXPECT_EQ(e.line(), line) << e.what();
-      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-    }
-  };
-  expect_error("bad1.yaml", "image: murea_room.png\nresolution: -0.1\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n",
-               2, "resolution");
-  expect_error("bad2.yaml", "image: murea_room.png\nresolution: 0.1\norigin: [0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n",
-               3, "origin");
-  expect_error("bad3.yaml", "image: nowhere.png\nresolution: 0.1\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n",
-               1, "cannot read image");
-  expect_error("bad4.yaml", "image: murea_room.png\nresolution: 0.1\norigin: [0, 0, 0\n", 4, "");
-  expect_error("bad5.yaml", "image: murea_room.png\nresolution: 0.1\norigin: [0, 0, 0]\nfree_thresh: 0.2\n", 1,
-               "occupied_thresh");
-  expect_error("bad6.yaml", "image: murea_room.png\nresolution: 0.1\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\nmode: raw\n",
-               6, "mode");
+  // A world file loads as itself.
+  EXPECT_EQ(load_map_world(MRT_MUREA_DATA "/room.yaml").name, mrt::world::load_world(MRT_MUREA_DATA "/room.yaml").name);
 }

@@ -21,7 +21,7 @@
 #include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common_ros/conversions.h"
-#include "mrt_murea/occupancy_map.h"
+#include "mrt_world/occupancy_map.h"
 #include "ros/node_options.h"
 
 namespace {
@@ -39,7 +39,7 @@ struct Stamped {
 class Evaluator {
  public:
   Evaluator(const mn::NodeOptions& o, const std::string& robot, std::ostream& out)
-      : opt_(o), map_(mrt::murea::load_map(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {}
+      : opt_(o), map_(mrt::world::load_map_world(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {}
 
   void run(rosbag::Bag& bag) {
     const std::vector<std::string> topics{ns_ + "/percepts", ns_ + "/odom", ns_ + "/ground_truth", "/tf", "/tf_static"};
@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
   std::vector<double> accuracy{0.05, 1.0};
   o.tracker.search.timeout = 0.05;
   o.tracker.search.timeout_cpu = true;  // as murea_node: CPU time of this thread
-  app.add_option("--map", o.map_file, "mrt_sim world file (YAML)")->required();
+  app.add_option("--map", o.map_file, "world file or map_server map (YAML)")->required();
   app.add_option("--bag", bag_file, "bag with /NS/percepts and /NS/odom or tf (/NS/ground_truth optional)")->required();
   app.add_option("--robot", robot, "the robot's namespace NS (frames NS/odom, NS/base_link)")->required();
   app.add_option("--out", out_file, "CSV: stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode")->required();

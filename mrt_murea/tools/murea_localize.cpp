@@ -1,5 +1,5 @@
 // murea_localize: global localization of each frame of a percept CSV in an
-// mrt_sim world (see README, "Command-line tool").
+// world file or map_server map (see README, "Command-line tool").
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -10,20 +10,20 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_murea/percept_csv.h"
 #include "mrt_common/cli.h"
-#include "mrt_murea/occupancy_map.h"
+#include "mrt_world/occupancy_map.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"MUREA global localization: one pose per percept frame", "murea_localize"};
   std::string map_file, percept_file;
   std::vector<double> accuracy{0.05, 1.0};
   double timeout = 1.0;
-  app.add_option("--map", map_file, "mrt_sim world file (YAML)")->required();
+  app.add_option("--map", map_file, "world file or map_server map (YAML)")->required();
   app.add_option("--percepts", percept_file, "CSV: frame,class,color,distance,bearing,reliability")->required();
   app.add_option("--accuracy", accuracy, "lattice spacing: XY (m) THETA (deg), default 0.05 1")->expected(2);
   app.add_option("--timeout", timeout, "seconds per frame (0 = no limit), default 1");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
-    const mrt::sim::World world = mrt::murea::load_map(map_file);
+    const mrt::world::World world = mrt::world::load_map_world(map_file);
     const auto frames = mrt::murea::load_percept_csv(percept_file);
     mrt::murea::SearchOptions opt;
     opt.accuracy_xy = accuracy[0];

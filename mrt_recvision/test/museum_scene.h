@@ -44,7 +44,7 @@ inline Truth make_truth(const mrt::sim::World& w, const mrt::sim::Pose2D& r, con
   // and two rays outside them by one scan line (1 degree) and the zigzag of
   // the lines' pixels (0.3 degree: half a pixel 100 px from the centre)
   // reach as far as its foot: objects closer together in bearing read as one
-  // hiding the other (README, "Museum").
+  // hiding the other (doc/method.md, "Museum").
   const double a = std::asin(std::min(1.0, radius / t.distance)), line = 1.3 * M_PI / 180.0;
   t.full = true;
   for (double off : {-0.95 * a, 0.0, 0.95 * a}) {

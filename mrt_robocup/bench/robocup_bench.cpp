@@ -24,7 +24,7 @@ int main() {
   double team_cpu = 0.0, team_sim = 0.0;
   int goals = 0;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_SIM_WORLDS);
+    TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
     o.seed = seed;
     o.duration = sim_seconds;
     TeamSession s(o);
@@ -35,7 +35,7 @@ int main() {
     goals += s.stats().score[0];
   }
   // Baseline: the same match and world with the robots standing still.
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_SIM_WORLDS);
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
   mrt::sim::World w = mrt::sim::load_world(o.world);
   mrt::sim::MatchConfig mc = mrt::sim::load_match_config(o.match);
   mrt::sim::setup_match_world(mc, w);

@@ -7,9 +7,10 @@
 
 namespace mrt::robocup {
 
-TeamSessionOptions default_session_options(const std::string& package_root, const std::string& sim_worlds) {
+TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds,
+                                           const std::string& sim_worlds) {
   TeamSessionOptions o;
-  o.world = sim_worlds + "/msl_field.yaml";
+  o.world = worlds + "/msl_field.yaml";
   o.match = sim_worlds + "/msl_match.yaml";
   o.team = package_root + "/config/team.yaml";
   o.rule_bases = package_root + "/config/brian";
@@ -18,7 +19,7 @@ TeamSessionOptions default_session_options(const std::string& package_root, cons
   return o;
 }
 
-void resolve_world_or_match(TeamSessionOptions& o) {
+void resolve_world_or_match(TeamSessionOptions& o, const std::string& field_world) {
   YAML::Node n;
   try {
     n = YAML::Load(common::read_file(o.world));
@@ -27,8 +28,7 @@ void resolve_world_or_match(TeamSessionOptions& o) {
   }
   if (!n.IsMap() || n["robots"] || !(n["opponents"] || n["referee"])) return;
   o.match = o.world;
-  const auto slash = o.world.rfind('/');
-  o.world = (slash == std::string::npos ? std::string() : o.world.substr(0, slash + 1)) + "msl_field.yaml";
+  o.world = field_world;
 }
 
 }  // namespace mrt::robocup

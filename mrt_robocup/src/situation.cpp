@@ -147,7 +147,7 @@ Shot plan_shot(const Point2D& from, const std::vector<Point2D>& obstacles, doubl
   // The open side: the near post's, the side the ball is on. The keeper
   // stands on the line goal centre - ball: a shot to the near post moves
   // away from it faster than it follows (1.5 against 8 m/s), one across
-  // that line draws it into the ball's path (README "Shooting"). Near the
+  // that line draws it into the ball's path (doc/shooting.md). Near the
   // axis the side chosen last stays (hysteresis).
   Shot s;
   s.side = side != 0.0 ? (side > 0.0 ? 1.0 : -1.0) : (from.y >= 0.0 ? 1.0 : -1.0);

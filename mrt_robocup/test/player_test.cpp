@@ -244,7 +244,7 @@ TEST(Player, NoKickFromFarAway) {
 namespace mrt::robocup {
 namespace {
 
-// The shot (README "Shooting"), keeper at (8.4, 0), field defaults (goal at
+// The shot (doc/shooting.md), keeper at (8.4, 0), field defaults (goal at
 // x = 9, aim_offset 0.85 m, spot 3.3 m out and 1.3 m aside, hysteresis
 // 0.25 m, keeper_clearance 0.65 m, shot_clearance 0.45 m).
 TEST(Situation, ShotAtTheNearPostClearOfTheKeeper) {

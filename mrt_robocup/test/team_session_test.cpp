@@ -15,7 +15,7 @@ namespace mrt::robocup {
 namespace {
 
 TeamSessionOptions options(std::uint64_t seed) {
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_SIM_WORLDS);
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
   o.seed = seed;
   o.duration = 120.0;
   o.replace_opponents = true;

@@ -49,7 +49,7 @@ void print_trace(const TeamSession& s, int trace_robot) {
 
 int main(int argc, char** argv) {
   using namespace mrt::robocup;
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_SIM_WORLDS);
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
   CLI::App app{"Runs the Milan RoboCup team (4 robots: MAP, SCARE, Mr. BRIAN) in mrt_sim's match"};
   app.add_option("--world", o.world, "mrt_sim world (the field), or a match file (then the field beside it)");
   app.add_option("--match", o.match, "mrt_sim match file");
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   app.add_option("--remove-at", remove_at, "... at this time (s)");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   try {
-    resolve_world_or_match(o);
+    resolve_world_or_match(o, MRT_WORLDS_DIR "/msl_field.yaml");
     if (keeper_and_static) use_keeper_and_static(o);
     TeamSession s(o);
     const auto t0 = std::chrono::steady_clock::now();

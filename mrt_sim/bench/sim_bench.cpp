@@ -108,10 +108,10 @@ void camera_metrics(const std::string& path, double secs, double kin) {
 
 int main(int argc, char** argv) {
   // Run from the workspace root by default.
-  std::string path = "mrt_sim/worlds/msl_field.yaml";
+  std::string path = "mrt_world/worlds/msl_field.yaml";
   double secs = 1.0;
   CLI::App app{"Simulator benchmark: prints `metric: value unit` lines.", "sim_bench"};
-  app.add_option("world", path, "world file (YAML), default mrt_sim/worlds/msl_field.yaml");
+  app.add_option("world", path, "world file (YAML), default mrt_world/worlds/msl_field.yaml");
   app.add_option("seconds", secs, "wall time per metric (s, > 0), default 1")->check(CLI::PositiveNumber);
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   World world;

@@ -1,5 +1,5 @@
 // The match layer: kickers, ball handling, scripted opponents and the
-// automatic referee (see match.h and the README, "Match simulation").
+// automatic referee (see match.h and doc/match.md).
 #include "mrt_sim/match.h"
 
 #include <algorithm>

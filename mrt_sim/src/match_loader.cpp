@@ -1,4 +1,4 @@
-// The match-file loader (format: README, "Match simulation"); every error
+// The match-file loader (format: doc/match.md, "Match file"); every error
 // names file:line:column through mrt_common/yaml_reader.h.
 #include <fstream>
 #include <set>

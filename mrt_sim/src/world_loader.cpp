@@ -12,6 +12,7 @@
 #include "mrt_common/yaml_reader.h"
 #include "mrt_sim/description.h"
 #include "mrt_sim/world.h"
+#include "mrt_world/world_loader.h"
 
 namespace mrt::sim {
 
@@ -25,7 +26,7 @@ using YAML::Node;
 
 // Reads YAML nodes into the world structs; every error names the node
 // (the strict readers: mrt_common/yaml_reader.h).
-class Loader : private mrt::common::YamlReader {
+class Loader : public mrt::common::YamlReader {
  public:
   using YamlReader::error;
   using YamlReader::load;
@@ -33,32 +34,13 @@ class Loader : private mrt::common::YamlReader {
   Loader(const std::string& file, std::string description_dir)
       : YamlReader(file), description_dir_(std::move(description_dir)) {}
 
+  // The static sections through mrt_world's loader (which also checks
+  // every top-level key), then the simulation's.
   World world(const Node& root) const {
-    if (!root.IsMap()) {
-      if (root.IsNull()) throw ParseError(file(), 1, 1, "expected a map at the top level, got an empty document");
-      fail(root, "expected a map at the top level");
-    }
-    map(root, "world", {"name", "seed", "bounds", "walls", "field_lines", "posts", "goals", "ball",
-                        "movers", "robots", "line_width", "floor_color", "surfaces"});
     World w;
-    w.file = file();
-    w.name = string(root, "name", "", true, "world");
+    static_cast<mrt::world::World&>(w) = mrt::world::read_world(*this, root);
     if (const Node n = root["seed"]) w.seed = static_cast<std::uint64_t>(integer(n, "seed", 0, std::numeric_limits<long long>::max()));
-    const Node bn = required(root, "bounds", "world");
-    const auto b = numbers(bn, "bounds", 4);
-    if (!(b[0] < b[2] && b[1] < b[3])) fail(bn, "expected 'bounds' [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax");
-    w.min_x = b[0], w.min_y = b[1], w.max_x = b[2], w.max_y = b[3];
-
-    if (const Node n = root["walls"])
-      for (const Node& e : sequence(n, "walls")) w.walls.push_back(segment(e, "walls"));
-    w.line_width = positive(root, "line_width", w.line_width);
     w.floor_color = string(root, "floor_color", w.floor_color, false, "world");
-    if (const Node n = root["field_lines"])
-      for (const Node& e : sequence(n, "field_lines")) field_line(e, w.field_lines);
-    if (const Node n = root["posts"])
-      for (const Node& e : sequence(n, "posts")) w.posts.push_back(post(e));
-    if (const Node n = root["goals"])
-      for (const Node& e : sequence(n, "goals")) w.goals.push_back(goal(e));
     if (const Node n = root["ball"]) w.ball = ball(n);
     if (const Node n = root["movers"])
       for (const Node& e : sequence(n, "movers")) w.movers.push_back(mover(e));
@@ -76,31 +58,6 @@ class Loader : private mrt::common::YamlReader {
     return w;
   }
 
-  Segment segment(const Node& n, const std::string& key) const {
-    const auto v = numbers(n, key, 4);
-    return {{v[0], v[1]}, {v[2], v[3]}};
-  }
-
-  // [x1, y1, x2, y2], or an arc {center, radius, segments, from, to} (deg)
-  // expanded into a polygon of `segments` chords.
-  void field_line(const Node& n, std::vector<Segment>& out) const {
-    if (!n.IsMap()) {
-      out.push_back(segment(n, "field_lines"));
-      return;
-    }
-    map(n, "field_lines arc", {"center", "radius", "segments", "from", "to"});
-    const auto c = numbers(required(n, "center", "field_lines arc"), "center", 2);
-    required(n, "radius", "field_lines arc");
-    const double r = positive(n, "radius", 1.0);
-    const long long k = n["segments"] ? integer(n["segments"], "segments", 1, 3600) : 24;
-    const double from = deg_to_rad(number(n, "from", 0.0)), to = deg_to_rad(number(n, "to", 360.0));
-    for (long long i = 0; i < k; ++i) {
-      const double a0 = from + (to - from) * i / k, a1 = from + (to - from) * (i + 1) / k;
-      out.push_back({{c[0] + r * std::cos(a0), c[1] + r * std::sin(a0)},
-                     {c[0] + r * std::cos(a1), c[1] + r * std::sin(a1)}});
-    }
-  }
-
   // A floor patch for the physical mice: {name, min: [x, y], max: [x, y],
   // resolution, clearance}.
   Surface surface(const Node& n) const {
@@ -115,29 +72,6 @@ class Loader : private mrt::common::YamlReader {
     f.resolution = positive(n, "resolution", f.resolution);
     f.clearance = number(n, "clearance", f.clearance);
     return f;
-  }
-
-  Post post(const Node& n) const {
-    map(n, "posts", {"name", "class", "color", "x", "y", "radius"});
-    Post p;
-    p.name = string(n, "name", "", true, "posts");
-    p.membership_class = string(n, "class", "Obstacle", false, "posts");
-    p.color = string(n, "color", "", false, "posts");
-    p.center = {number(required(n, "x", "posts"), "x"), number(required(n, "y", "posts"), "y")};
-    p.radius = positive(n, "radius", p.radius);
-    return p;
-  }
-
-  Goal goal(const Node& n) const {
-    map(n, "goals", {"name", "color", "x", "y", "theta", "width", "depth"});
-    Goal g;
-    g.name = string(n, "name", "", true, "goals");
-    g.color = string(n, "color", "", false, "goals");
-    g.pose = Pose2D(number(required(n, "x", "goals"), "x"), number(required(n, "y", "goals"), "y"),
-                    deg_to_rad(number(n, "theta", 0.0)));
-    g.width = positive(n, "width", g.width);
-    g.depth = positive(n, "depth", g.depth);
-    return g;
   }
 
   Ball ball(const Node& n) const {

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <iostream>
 
-#include "mrt_sim/world.h"
+#include "mrt_world/world.h"
 #include "mrt_spike/map_sources.h"
 #include "mrt_spike/planner.h"
 
@@ -14,10 +14,10 @@ namespace mrt::spike {
 
 namespace {
 
-void wall(mrt::sim::World& w, double x0, double y0, double x1, double y1) { w.walls.push_back({{x0, y0}, {x1, y1}}); }
+void wall(mrt::world::World& w, double x0, double y0, double x1, double y1) { w.walls.push_back({{x0, y0}, {x1, y1}}); }
 
-mrt::sim::World office() {
-  mrt::sim::World w;
+mrt::world::World office() {
+  mrt::world::World w;
   w.min_x = 0, w.min_y = 0, w.max_x = 80, w.max_y = 50;
   wall(w, 0, 0, 80, 0), wall(w, 80, 0, 80, 50), wall(w, 80, 50, 0, 50), wall(w, 0, 50, 0, 0);
   for (int k = 1; k < 8; ++k) {  // walls between rooms, a door in each

@@ -1,7 +1,5 @@
 #include "mrt_spike/world_planner.h"
 
-#include "mrt_common/yaml_reader.h"
-
 namespace mrt::spike {
 
 WorldPlanner::WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options)
@@ -38,12 +36,5 @@ void WorldPlanner::set_obstacle(int id, double x, double y, double r, double vx,
 void WorldPlanner::remove_obstacle(int id) { spike_->obstacles().remove(id); }
 
 bool WorldPlanner::still_valid(const WorldPlan& p) const { return p.solved && spike_->still_valid(p.waypoints); }
-
-WorldGrid load_any_map(const std::string& path, double resolution) {
-  const mrt::common::YamlReader yr(path);
-  const YAML::Node root = yr.load(mrt::common::read_file(path, "cannot open file", 1 << 22));
-  if (root.IsMap() && root["image"]) return load_occupancy_map(path);
-  return load_world_map(path, resolution);
-}
 
 }  // namespace mrt::spike

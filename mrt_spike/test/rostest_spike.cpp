@@ -1,4 +1,4 @@
-// spike_node on the Roby outdoor map (mrt_sim's roby_outdoor world at 0.1 m,
+// spike_node on the Roby outdoor map (mrt_world.s roby_outdoor world at 0.1 m,
 // robot radius 0.3 + safety 0.1): make_plan around the buildings, and a new
 // plan when a person steps onto the current one.
 #include <gtest/gtest.h>
@@ -11,15 +11,15 @@
 #include <cmath>
 
 #include "mrt_common_ros/rostest_helpers.h"
-#include "mrt_sim/world.h"
+#include "mrt_world/world_loader.h"
 
 using mrt::ros_common::wait_for;
 
 namespace {
 
-double clearance(const mrt::sim::World& w, double x, double y) {
+double clearance(const mrt::world::World& w, double x, double y) {
   double d = 1e9;
-  for (const auto& s : mrt::sim::solid_segments(w)) d = std::min(d, mrt::sim::distance_to_segment({x, y}, s));
+  for (const auto& s : mrt::world::solid_segments(w)) d = std::min(d, mrt::world::distance_to_segment({x, y}, s));
   for (const auto& p : w.posts) d = std::min(d, std::hypot(x - p.center.x, y - p.center.y) - p.radius);
   return d;
 }
@@ -38,7 +38,7 @@ TEST(SpikeNode, MakePlanOnTheRobyMap) {
   ros::NodeHandle nh, pnh("~");
   std::string world_file;
   ASSERT_TRUE(pnh.getParam("world", world_file));
-  const mrt::sim::World w = mrt::sim::load_world(world_file);
+  const mrt::world::World w = mrt::world::load_world(world_file);
   ASSERT_TRUE(ros::service::waitForService("make_plan", ros::Duration(20)));
   nav_msgs::GetPlan srv;
   // Roby's route ends: (8, 0) to (36, 20), past buildings A, B and C.

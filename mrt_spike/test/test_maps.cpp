@@ -1,4 +1,5 @@
-// Maps from mrt_sim worlds and map_server images; cells worked by hand.
+// SPIKE's grids from worlds and map_server maps (mrt_world loads and
+// rasterizes them; its tests check that); cells worked by hand.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -9,7 +10,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "mrt_common/parse_error.h"
-#include "mrt_sim/world.h"
 #include "mrt_spike/map_sources.h"
 
 using namespace mrt::spike;
@@ -31,10 +31,10 @@ TEST(WorldMap, WallsAndPostsRasterized) {
   // rows = 20 cells. The post at (1.5, 0.5), radius 0.1, blocks centres within
   // 0.1707: the 4 at distance 0.0707 and the 8 at 0.158 (one step further in
   // x or y); (1.35, 0.35) is at 0.212: 12 cells.
-  mrt::sim::World w;
+  mrt::world::World w;
   w.min_x = 0, w.min_y = 0, w.max_x = 2, w.max_y = 1;
   w.walls.push_back({{0.5, 0.0}, {0.5, 1.0}});
-  mrt::sim::Post p;
+  mrt::world::Post p;
   p.center = {1.5, 0.5};
   p.radius = 0.1;
   w.posts.push_back(p);
@@ -60,7 +60,7 @@ TEST(OccupancyMap, MapServerImageFlippedAndThresholded) {
   ASSERT_TRUE(cv::imwrite((d / "m.png").string(), img));
   std::ofstream(d / "m.yaml") << "image: m.png\nresolution: 0.5\norigin: [-1.0, 2.0, 0.0]\n"
                                  "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  const WorldGrid m = load_occupancy_map((d / "m.yaml").string());
+  const WorldGrid m = load_any_map((d / "m.yaml").string(), 1.0);
   ASSERT_EQ(m.grid.width(), 3);
   ASSERT_EQ(m.grid.height(), 2);
   // p = (255 - v) / 255: 254 -> 0.004 free; 205 -> 0.196 not < 0.196: blocked
@@ -76,19 +76,29 @@ TEST(OccupancyMap, MapServerImageFlippedAndThresholded) {
   // errors name file:line
   std::ofstream(d / "bad.yaml") << "image: m.png\norigin: [0, 0, 0]\nresolution: -1\n";
   try {
-    load_occupancy_map((d / "bad.yaml").string());
+    load_any_map((d / "bad.yaml").string(), 1.0);
     FAIL() << "no error";
   } catch (const mrt::common::ParseError& e) {
     EXPECT_EQ(e.line(), 3);
     EXPECT_NE(std::string(e.what()).find("expected 'resolution' > 0"), std::string::npos) << e.what();
   }
-  std::ofstream(d / "noimg.yaml") << "image: missing.png\nresolution: 1\norigin: [0, 0, 0]\n";
+  std::ofstream(d / "noimg.yaml") << "image: missing.png\nresolution: 1\norigin: [0, 0, 0]\n"
+                                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
   try {
-    load_occupancy_map((d / "noimg.yaml").string());
+    load_any_map((d / "noimg.yaml").string(), 1.0);
     FAIL() << "no error";
   } catch (const mrt::common::ParseError& e) {
     EXPECT_EQ(e.line(), 1);
     EXPECT_NE(std::string(e.what()).find("cannot read image"), std::string::npos) << e.what();
+  }
+  // a turned map: SPIKE's grids are axis-aligned
+  std::ofstream(d / "turned.yaml") << "image: m.png\nresolution: 0.5\norigin: [0, 0, 0.5]\n"
+                                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  try {
+    load_any_map((d / "turned.yaml").string(), 1.0);
+    FAIL() << "no error";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("turned.yaml: expected an origin yaw of 0"), std::string::npos) << e.what();
   }
   fs::remove_all(d);
 }

@@ -1,4 +1,4 @@
-// FollowMe's museum (mrt_sim/worlds/museum.yaml): four rooms joined by four
+// FollowMe's museum (mrt_world/worlds/museum.yaml): four rooms joined by four
 // doors 1.0-1.2 m wide; closing a door with an obstacle makes SPIKE re-plan
 // through the other three.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@ using namespace mrt::spike;
 
 namespace {
 
-const std::string kMuseum = std::string(MRT_SIM_WORLDS) + "/museum.yaml";
+const std::string kMuseum = std::string(MRT_WORLDS_DIR) + "/museum.yaml";
 
 // The closest a plan's poses come to (x, y).
 double closest(const WorldPlan& p, double x, double y) {

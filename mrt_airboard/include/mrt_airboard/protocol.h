@@ -1,5 +1,5 @@
 // The PC <-> AIRBoard serial protocol (specified byte by byte in the
-// package README). ROS-free.
+// package's doc/protocol.md). ROS-free.
 //
 // Frame:  0xA5 | LEN | TYPE | SEQ | PAYLOAD (LEN bytes) | CRC_L | CRC_H
 // LEN is the payload length (0..kMaxPayload). The CRC is CRC-16/CCITT-FALSE

@@ -20,7 +20,7 @@ struct ChannelConfig {
   enum Kind { IP, SERIAL } kind = IP;
   ChannelMode mode = ChannelMode::LINK;
   /// Forward a message on this channel only if it has travelled at most
-  /// `level` network channels already (0..kMaxHops). See README.
+  /// `level` network channels already (0..kMaxHops). See doc/communities.md.
   int level = 0;
   std::string local_addr;
   int local_port = 0;

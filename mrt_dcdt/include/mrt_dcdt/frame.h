@@ -1,4 +1,4 @@
-// The DCDT wire protocol (README "Wire protocol"): a versioned,
+// The DCDT wire protocol (doc/protocol.md "Wire protocol"): a versioned,
 // length-prefixed, CRC-protected frame.
 //   offset size
 //   0      2   magic 0x44 0x43 ("DC")

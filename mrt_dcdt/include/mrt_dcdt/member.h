@@ -49,7 +49,7 @@ class Member {
   /// Hands msg to the PostOffice (and the Agora's links); takes ownership.
   /// False when a guaranteed message was refused by a full mailbox of this
   /// Agora (SLWB; README "PostOffice policies") or by a full link out-queue
-  /// (README "Guarantees under faults"); it went to every other destination.
+  /// (doc/faults.md "Guarantees under faults"); it went to every other destination.
   bool share_msg(Msg* msg);
   /// Makes the oldest waiting message the current one and returns it
   /// (nullptr when none). The previous current message is released. The

@@ -11,7 +11,7 @@
 
 namespace mrt::dcdt {
 
-/// Header fields carried on the wire (see README "Wire protocol").
+/// Header fields carried on the wire (see doc/protocol.md "Wire protocol").
 struct MsgHeader {
   int32_t type = 0;
   int32_t member_id = 0;

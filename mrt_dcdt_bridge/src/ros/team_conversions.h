@@ -16,7 +16,7 @@ namespace mrt::dcdt::ros_conv {
 /// "CrispData" per coordination parameter. Throws XmlError for what XML
 /// cannot carry (an empty source, non-finite numbers).
 XmlMessage from_world_model(const mrt_msgs::WorldModel& w);
-/// Throws XmlError when the document is not of that form (README table).
+/// Throws XmlError when the document is not of that form (doc/formats.md).
 mrt_msgs::WorldModel to_world_model(const XmlMessage& x);
 
 /// One object of class "Coordination" (the sender), then "Slot" (per slot,

@@ -1,4 +1,4 @@
-// The map MUREA localizes in: the features of an mrt_sim world grouped by
+// The map MUREA localizes in: the features of a world (mrt_world) grouped by
 // the percept class that sees them, each with a distance function that is
 // O(1) to query (ROS-free).
 #pragma once
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mrt_common/pose2d.h"
-#include "mrt_sim/world.h"
+#include "mrt_world/world.h"
 
 namespace mrt::murea {
 
@@ -17,7 +17,7 @@ using mrt::common::Point2D;
 using mrt::common::Pose2D;
 
 /// The percept classes MUREA matches, named as the simulator's vision
-/// percepts name them (mrt_sim/sensors.h): Line = a field-line point,
+/// ontology names them (mrt_common/ontology/mrt.yaml): Line = a field-line point,
 /// Goal = the centre of a goal's mouth, GoalPost = a goal post, Landmark =
 /// a post of class Landmark, Wall = a point on a wall or a goal wall.
 enum class FeatureClass { Line, Goal, GoalPost, Landmark, Wall };
@@ -37,7 +37,7 @@ const char* to_string(FeatureClass c);
 class DistanceGrid {
  public:
   DistanceGrid() = default;
-  DistanceGrid(std::vector<mrt::sim::Segment> segments, double min_x, double min_y, double max_x,
+  DistanceGrid(std::vector<mrt::world::Segment> segments, double min_x, double min_y, double max_x,
                double max_y, double resolution);
   double at(double x, double y) const;
   double exact(double x, double y) const;
@@ -51,7 +51,7 @@ class DistanceGrid {
   int height() const { return ny_; }
 
  private:
-  std::vector<mrt::sim::Segment> segments_;
+  std::vector<mrt::world::Segment> segments_;
   std::vector<float> cells_;
   std::vector<std::uint32_t> nearest_;  // index of the nearest segment, per pixel
   double min_x_ = 0, min_y_ = 0, res_ = 1, inv_res_ = 1, slack_ = 0;
@@ -95,7 +95,7 @@ class FeatureMap {
   /// segments by the world loader) -> Line; walls and goal walls -> Wall;
   /// goal mouth centres -> Goal; goal posts (goal's colour) -> GoalPost;
   /// posts of class Landmark -> Landmark. Bounds are the world's.
-  explicit FeatureMap(const mrt::sim::World& world, const MapOptions& options = {});
+  explicit FeatureMap(const mrt::world::World& world, const MapOptions& options = {});
 
   /// The layer a percept of class `c` and colour `color` is matched against.
   Layer layer(FeatureClass c, const std::string& color) const;

@@ -26,7 +26,7 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   ParamReader p(pnh);
   SearchOptions& s = o.tracker.search;
   TrackerOptions& t = o.tracker;
-  p.require("map", o.map_file, "the path of the map (an mrt_sim world YAML file)");
+  p.require("map", o.map_file, "the path of the map (a world file or a map_server map YAML)");
   p.get_positive("accuracy_xy", s.accuracy_xy).get_positive("accuracy_theta", s.accuracy_theta);
   ParamReader::check(s.accuracy_theta <= 1.0, "accuracy_theta", "a number of radians in (0, 1]");
   s.timeout = 0.05;

@@ -14,7 +14,7 @@
 namespace mrt::murea::node {
 
 struct NodeOptions {
-  std::string map_file;             // ~map: mrt_sim world file (required)
+  std::string map_file;             // ~map: world file or map_server map (required)
   TrackerOptions tracker;           // ~accuracy_xy, ~accuracy_theta, ~timeout, ~tolerance_<class>, window, collapse, ~refine*
   std::string frame_prefix;         // ~frame_prefix, e.g. "robot1/"
   std::string map_frame = "map";    // ~map_frame (global: not prefixed)

@@ -36,8 +36,8 @@ struct PlayerOptions {
   /// rad/s: no kick while the measured turn rate is higher. The pose the
   /// shot is aimed with is 0.1-0.25 s old when the kicker fires (MUREA,
   /// the 10 Hz cycle, the AIRBoard): turning at 0.87 rad/s a kick aimed
-  /// within 1 degree left 3 degrees off and hit the post (README
-  /// "Shooting"); at 0.1 rad/s the error stays under 1.5 degrees.
+  /// within 1 degree left 3 degrees off and hit the post (see
+  /// doc/shooting.md); at 0.1 rad/s the error stays under 1.5 degrees.
   double kick_max_omega = 0.1;
   bool play_without_referee = false;  // true: play before any referee command
   /// s the last job is kept while SCARE gives none (a robot waiting for a

@@ -1,6 +1,6 @@
 // Default file locations of the team session (source tree or install
 // space, given by the build) and the --world convenience: a match file
-// passed as --world means "that match on the field world beside it".
+// passed as --world means "that match on the MSL field world".
 // ROS-free.
 #pragma once
 
@@ -10,13 +10,15 @@
 
 namespace mrt::robocup {
 
-/// Options with the package's defaults under `package_root` (config/...)
-/// and mrt_sim's worlds under `sim_worlds` (msl_field.yaml, msl_match.yaml).
-TeamSessionOptions default_session_options(const std::string& package_root, const std::string& sim_worlds);
+/// Options with the package's defaults under `package_root` (config/...),
+/// the field of mrt_world's worlds under `worlds` (msl_field.yaml) and the
+/// match file under `sim_worlds` (msl_match.yaml).
+TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds,
+                                           const std::string& sim_worlds);
 
 /// If `o.world` is a match file (it has `opponents` or `referee` and no
-/// `robots`), it becomes o.match and the world msl_field.yaml of the same
-/// directory. Throws mrt::common::ParseError when the file does not parse.
-void resolve_world_or_match(TeamSessionOptions& o);
+/// `robots`), it becomes o.match and the world `field_world`. Throws
+/// mrt::common::ParseError when the file does not parse.
+void resolve_world_or_match(TeamSessionOptions& o, const std::string& field_world);
 
 }  // namespace mrt::robocup

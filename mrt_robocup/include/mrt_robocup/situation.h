@@ -54,7 +54,7 @@ struct SituationOptions {
   double shot_range = 6.0;           // m: farther, ShotClear is 0
   double keeper_zone = 2.0;          // m: the obstacle nearest the goal centre within this is the keeper
   /// m: the keeper (mrt_sim's: 0.6 m out, 1.5 m/s) still reaches an 8 m/s
-  /// shot whose line passes closer than this from it (README "Shooting").
+  /// shot whose line passes closer than this from it (doc/shooting.md).
   double keeper_clearance = 0.65;
   double side_hysteresis = 0.25;     // m: the aim changes side once the ball is this far on the other
   double spot_depth = 3.3;           // m: the shooting spot, this far out of the goal line ...
@@ -93,7 +93,7 @@ struct Situation {
   double area_time = 0.0;            // s in the opponents' penalty area so far
 };
 
-/// A shot at the goal's open side (README "Shooting"), from `from` (the
+/// A shot at the goal's open side (doc/shooting.md), from `from` (the
 /// ball): the aim, aim_offset beside the goal centre on the near post's side
 /// (the side of `from`, with hysteresis); the shooting spot on that side;
 /// whether the line clears the keeper (the obstacle nearest the goal centre)

@@ -1,7 +1,7 @@
 // SCARE coordination (manual ch. 11, §2.3.3): the designer's activities —
 // jobs (one robot's activity, with a cardinality) and schemata (several
 // robots' activity, with roles) — and the robots' parameters, loaded from
-// YAML (format in the README). ROS-free.
+// YAML (format in doc/formats.md). ROS-free.
 #pragma once
 
 #include <map>
@@ -50,7 +50,7 @@ struct RobotSpec {
   std::map<std::string, double> attitude;
 };
 
-/// How allocation trades utility against stability (README, "Allocation").
+/// How allocation trades utility against stability (doc/coordination.md, "Allocation").
 struct AllocationOptions {
   double time_scale = 2.0;       // s: fit = attitude / (1 + time / time_scale)
   double hysteresis = 0.15;      // utility margin the incumbent keeps its role by

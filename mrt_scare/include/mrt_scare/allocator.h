@@ -1,6 +1,6 @@
 // SCARE coordination: the decision step (agenda) and the coordination step
 // (allocation under cardinality and schema coverage, with hysteresis and
-// deterministic tie-breaks). ROS-free; the rules are in the README.
+// deterministic tie-breaks). ROS-free; the rules are in doc/coordination.md.
 #pragma once
 
 #include <limits>

@@ -3,7 +3,7 @@
 // allocates the whole team from what it last heard of everyone (its own
 // entry included, as published), so that robots with the same information
 // reach the same allocation. Stale teammates are penalised, silent ones
-// dropped. ROS-free; the protocol is in the README.
+// dropped. ROS-free; the protocol is in doc/coordination.md.
 #pragma once
 
 #include <cstdint>

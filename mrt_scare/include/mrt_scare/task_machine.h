@@ -2,7 +2,7 @@
 // YAML as state machines whose success, failure and timeout conditions are
 // fuzzy predicates over crisp data (Mr. BRIAN's predicate language, as the
 // opportunities of activities), with exception handlers: abort, retry,
-// re-plan, hand back to the coordinator. ROS-free; format in the README.
+// re-plan, hand back to the coordinator. ROS-free; format in doc/formats.md.
 #pragma once
 
 #include <map>

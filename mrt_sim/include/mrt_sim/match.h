@@ -59,7 +59,7 @@ struct MatchConfig {
   RefereeConfig referee;
 };
 
-/// Loads a match file (format: mrt_sim/README.md, "Match simulation");
+/// Loads a match file (format: mrt_sim/doc/match.md, "Match file");
 /// throws mrt::common::ParseError naming file:line:column.
 MatchConfig load_match_config(const std::string& path);
 MatchConfig parse_match_config(const std::string& yaml_text, const std::string& file);

@@ -1,5 +1,7 @@
-// The simulated world: static geometry, dynamic objects and robots, loaded
-// from a YAML file (ROS-free).
+// The simulated world: the static world (mrt_world: walls, lines, posts,
+// goals, doors, regions) plus what moves and senses: the ball, movers,
+// robots with their sensors, floor patches for the mice; loaded from one
+// YAML file (ROS-free).
 #pragma once
 
 #include <array>
@@ -10,37 +12,19 @@
 #include "mrt_common/omni_camera.h"
 #include "mrt_common/pose2d.h"
 #include "mrt_sim/kinematics.h"
+#include "mrt_world/world.h"
 
 namespace mrt::sim {
 
 using mrt::common::Point2D;
 using mrt::common::Pose2D;
-
-/// A straight segment. Walls block motion, sonar and vision; painted field
-/// lines block nothing and are seen by vision as line points.
-struct Segment {
-  Point2D a, b;
-};
-
-/// A static cylinder: a coloured landmark post, a goal post, a tree, a
-/// parked-car approximation. Blocks motion, sonar and vision.
-struct Post {
-  std::string name;
-  std::string membership_class;  // "Landmark", "GoalPost", "Obstacle", ...
-  std::string color;             // symbolic colour seen by vision ("" if none)
-  Point2D center;
-  double radius = 0.1;
-};
-
-/// A goal of the field: seen by vision as one object at its mouth centre;
-/// its three sides (back and two sides) are walls.
-struct Goal {
-  std::string name;
-  std::string color;
-  Pose2D pose;         // mouth centre, theta pointing into the goal
-  double width = 2.0;  // m
-  double depth = 0.5;  // m
-};
+using mrt::world::Goal;
+using mrt::world::Post;
+using mrt::world::Segment;
+using mrt::world::distance_to_segment;
+using mrt::world::goal_posts;
+using mrt::world::goal_walls;
+using mrt::world::solid_segments;
 
 /// The ball: a cylinder rolling with constant deceleration `friction`
 /// (m/s^2) until it stops; pushed by robots and bounced by walls with
@@ -174,16 +158,9 @@ struct RobotConfig {
   SensorsConfig sensors;
 };
 
-struct World {
-  std::string name;
-  std::string file;                     // where it was loaded from
-  double min_x = -10, min_y = -10, max_x = 10, max_y = 10;  // bounds, m
-  std::vector<Segment> walls;
-  std::vector<Segment> field_lines;
-  double line_width = 0.125;            // m, painted width of the field lines (MSL: 12.5 cm)
+/// The static world and what the simulation adds to it.
+struct World : mrt::world::World {
   std::string floor_color = "carpet";   // the camera's floor: "carpet" (green) or a colour name
-  std::vector<Post> posts;
-  std::vector<Goal> goals;
   Ball ball;
   std::vector<Mover> movers;
   std::vector<RobotConfig> robots;
@@ -191,27 +168,14 @@ struct World {
   std::uint64_t seed = 1;
 };
 
-/// The three walls of a goal (back and two sides; the mouth is open), in
-/// the world frame.
-std::array<Segment, 3> goal_walls(const Goal& g);
-
-/// The two goal posts at the ends of the mouth: [left, right] as seen from
-/// the field looking into the goal.
-std::array<Point2D, 2> goal_posts(const Goal& g);
-
-/// Every segment that blocks motion, sonar and vision: walls and goal walls.
-std::vector<Segment> solid_segments(const World& w);
-
-/// Distance from `p` to the closest point of `s`; that point in `closest`.
-double distance_to_segment(const Point2D& p, const Segment& s, Point2D* closest = nullptr);
-
 /// Directory of mrt_description's URDF files built into mrt_sim_core (see
 /// description.h).
 std::string default_description_dir();
 
-/// Loads a world file. Throws mrt::common::ParseError naming the file, the
-/// line (and column) of the offending node and what was expected. The
-/// format is documented in mrt_sim/README.md. Sensor mounts (camera
+/// Loads a world file: its static sections (mrt_world's loader) and the
+/// simulation's. Throws mrt::common::ParseError naming the file, the line
+/// (and column) of the offending node and what was expected. The format is
+/// documented in mrt_world/README.md and mrt_sim/README.md. Sensor mounts (camera
 /// viewpoint, mice) come from `<description_dir>/<base>.urdf` when that
 /// file exists and has the link ("" = no URDF).
 World load_world(const std::string& path, const std::string& description_dir = default_description_dir());

@@ -14,7 +14,7 @@ namespace mrt::sim::node {
 
 struct NodeOptions {
   std::string world_file;              // ~world (required)
-  std::string match_file;              // ~match: match file (README "Match simulation"), "" = none
+  std::string match_file;              // ~match: match file (doc/match.md), "" = none
   double rate_hz = 1000.0;             // ~rate_hz: physics steps per simulated second
   double real_time_factor = 1.0;       // ~real_time_factor: sim seconds per wall second
   bool publish_clock = true;           // ~publish_clock

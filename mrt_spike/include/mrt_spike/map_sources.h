@@ -1,15 +1,13 @@
-// Maps for SPIKE from the stack's world files (mrt_sim) and from
-// map_server occupancy images (YAML + PNG/PGM), both in metres.
+// SPIKE's grids from the stack's maps (mrt_world): world files rasterized
+// and map_server maps, both in metres; Moving AI maps are movingai.h's.
 #pragma once
 
 #include <string>
 
 #include "mrt_spike/grid.h"
 #include "mrt_spike/poses.h"
-
-namespace mrt::sim {
-struct World;
-}
+#include "mrt_world/occupancy_map.h"
+#include "mrt_world/world.h"
 
 namespace mrt::spike {
 
@@ -22,22 +20,19 @@ struct WorldGrid {
   Cell cell_at(double x, double y) const;
 };
 
-/// Rasterizes the fixed objects of an mrt_sim world (walls, goal walls,
-/// posts: buildings and polygons are walls in that format) over its bounds:
-/// a cell is blocked when any part of it may touch an object (its centre
-/// within resolution/sqrt(2) of a wall, within radius + resolution/sqrt(2)
-/// of a post), so no wall leaks between cells. Movers are not included (they
-/// are moving obstacles).
-WorldGrid rasterize_world(const mrt::sim::World& world, double resolution);
-/// Loads the world file (mrt_sim's loader; its ParseErrors name file:line).
-WorldGrid load_world_map(const std::string& path, double resolution);
+/// SPIKE's grid of an occupancy map: a cell is free when the map's is (known
+/// and below free_thresh), blocked otherwise (occupied and unknown alike).
+/// Throws mrt::common::ParseError naming the map's file when its origin has
+/// a yaw (SPIKE's grids are axis-aligned).
+WorldGrid to_world_grid(const mrt::world::OccupancyMap& map);
 
-/// Reads a map_server map: the YAML (`image`, `resolution`, `origin`,
-/// `negate`, `occupied_thresh`, `free_thresh`, `mode` trinary|scale|raw)
-/// and its image (OpenCV imread, relative to the YAML). Occupancy of a pixel
-/// p = (255 - v) / 255 (v itself when negate); free when p < free_thresh,
-/// else blocked (occupied and unknown alike). The image's bottom row is row
-/// 0, as map_server does. Errors are ParseErrors naming file:line.
-WorldGrid load_occupancy_map(const std::string& yaml_path);
+/// The fixed objects of a world on a grid (mrt_world's rasterize: walls,
+/// goal walls and posts block every cell they may touch; movers are moving
+/// obstacles, not here).
+WorldGrid rasterize_world(const mrt::world::World& world, double resolution);
+
+/// A map_server YAML as it is, or a world file rasterized at `resolution`
+/// (mrt_world's load_map_grid; its ParseErrors name file:line).
+WorldGrid load_any_map(const std::string& path, double resolution);
 
 }  // namespace mrt::spike

@@ -52,8 +52,4 @@ class WorldPlanner {
   std::unique_ptr<DynamicSpike> spike_;
 };
 
-/// A map file: map_server YAML (it has an `image` key) or an mrt_sim world
-/// (rasterized at `resolution` m).
-WorldGrid load_any_map(const std::string& path, double resolution);
-
 }  // namespace mrt::spike

@@ -319,7 +319,7 @@ NodeOptions read_options(ros::NodeHandle& pnh) {
   mrt::ros_common::ParamReader p(pnh);
   NodeOptions o;
   auto& w = o.planner;
-  p.require("map", o.map, "a map file: mrt_sim world YAML or map_server YAML")
+  p.require("map", o.map, "a map file: world YAML or map_server YAML")
       .get_positive("resolution", o.resolution)
       .get_non_negative("robot_radius", w.robot_radius)
       .get_non_negative("safety_distance", w.safety_distance)

@@ -1,10 +1,30 @@
 // World geometry helpers (the YAML loader is world_loader.cpp).
-#include "mrt_sim/world.h"
+#include "mrt_world/world.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
-namespace mrt::sim {
+namespace mrt::world {
+
+std::vector<Post> World::posts_of(const std::string& membership_class) const {
+  std::vector<Post> out;
+  for (const Post& p : posts)
+    if (p.membership_class == membership_class) out.push_back(p);
+  return out;
+}
+
+const Door& World::door(const std::string& name) const {
+  for (const Door& d : doors)
+    if (d.name == name) return d;
+  throw std::out_of_range("no door named '" + name + "' in world '" + this->name + "'");
+}
+
+const Region* World::region_at(const Point2D& p) const {
+  for (const Region& r : regions)
+    if (inside(r.polygon, p)) return &r;
+  return nullptr;
+}
 
 std::array<Segment, 3> goal_walls(const Goal& g) {
   const double h = 0.5 * g.width;
@@ -37,4 +57,13 @@ double distance_to_segment(const Point2D& p, const Segment& s, Point2D* closest)
   return std::sqrt(dx * dx + dy * dy);  // not hypot: this is the hot path, and slow there
 }
 
-}  // namespace mrt::sim
+bool inside(const std::vector<Point2D>& poly, const Point2D& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Point2D &a = poly[i], &b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+}  // namespace mrt::world

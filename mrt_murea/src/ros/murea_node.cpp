@@ -24,7 +24,7 @@
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
-#include "mrt_murea/occupancy_map.h"
+#include "mrt_world/occupancy_map.h"
 #include "ros/markers.h"
 #include "ros/node_options.h"
 
@@ -37,7 +37,7 @@ class MureaNode {
  public:
   MureaNode(ros::NodeHandle& nh, const ros::NodeHandle& pnh)
       : opt_(read_options(pnh)),
-        map_(mrt::murea::load_map(opt_.map_file)),
+        map_(mrt::world::load_map_world(opt_.map_file)),
         tracker_(map_, opt_.tracker),
         odom_frame_(opt_.frame_prefix + opt_.odom_frame),
         base_frame_(opt_.frame_prefix + opt_.base_frame),
