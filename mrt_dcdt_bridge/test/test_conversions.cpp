@@ -41,7 +41,7 @@ mrt_msgs::Percept Sample() {
 
 TEST(Conversions, PerceptRoundTripThroughXmlTextIsExact) {
   const auto p = Sample();
-  const auto q = ros_conv::to_percept(decode_xml(encode_xml(ros_conv::from_percept(p))));
+  const auto q = node::to_percept(decode_xml(encode_xml(node::from_percept(p))));
   EXPECT_EQ(q.header.stamp, p.header.stamp);
   EXPECT_EQ(q.header.frame_id, p.header.frame_id);
   EXPECT_EQ(q.sensor, p.sensor);
@@ -62,7 +62,7 @@ TEST(Conversions, CrispDataAndCommandsRoundTrip) {
     d.reliability = 0.25 * i;
     c.data.push_back(d);
   }
-  const auto c2 = ros_conv::to_crisp_data(decode_xml(encode_xml(ros_conv::from_crisp_data(c))));
+  const auto c2 = node::to_crisp_data(decode_xml(encode_xml(node::from_crisp_data(c))));
   EXPECT_EQ(c2.header.stamp, c.header.stamp);
   EXPECT_TRUE(c2.data == c.data);
 
@@ -75,15 +75,15 @@ TEST(Conversions, CrispDataAndCommandsRoundTrip) {
   cmd.name = "SpeedAngle";
   cmd.value = -17.25;
   k.commands.push_back(cmd);
-  const auto k2 = ros_conv::to_commands(decode_xml(encode_xml(ros_conv::from_commands(k))));
+  const auto k2 = node::to_commands(decode_xml(encode_xml(node::from_commands(k))));
   EXPECT_TRUE(k2.commands == k.commands);
 }
 
 TEST(Conversions, WrongShapeIsRejected) {
   XmlMessage x;
   x.objects.push_back({"ball", "Ball", {{"distance", 1, "", 0, 1}}});
-  EXPECT_THROW(ros_conv::to_commands(x), XmlError);
-  EXPECT_THROW(ros_conv::to_crisp_data(x), XmlError);
+  EXPECT_THROW(node::to_commands(x), XmlError);
+  EXPECT_THROW(node::to_crisp_data(x), XmlError);
 }
 
 XmlMessage Stamped(const char* time) {
@@ -94,20 +94,20 @@ TEST(Conversions, TimesOutsideRosTimeAreRejectedNotWrapped) {
   // ROS time: uint32 seconds, so [0, 2^32 - 1] s.
   for (const char* t : {"-1", "-4294967296", "4294967296", "4294967296.5", "9999999999"}) {
     const XmlMessage x = Stamped(t);
-    EXPECT_THROW(ros_conv::to_percept(x), XmlError) << t;
-    EXPECT_THROW(ros_conv::to_crisp_data(x), XmlError) << t;
-    EXPECT_THROW(ros_conv::to_commands(x), XmlError) << t;
+    EXPECT_THROW(node::to_percept(x), XmlError) << t;
+    EXPECT_THROW(node::to_crisp_data(x), XmlError) << t;
+    EXPECT_THROW(node::to_commands(x), XmlError) << t;
   }
   try {
-    ros_conv::to_percept(Stamped("-1"));
+    node::to_percept(Stamped("-1"));
   } catch (const XmlError& e) {
     EXPECT_NE(std::string(e.what()).find("outside the ROS time range"), std::string::npos) << e.what();
   }
   // The edges themselves convert exactly.
-  auto lo = ros_conv::to_percept(Stamped("0"));
+  auto lo = node::to_percept(Stamped("0"));
   EXPECT_EQ(lo.header.stamp.sec, 0u);
   EXPECT_EQ(lo.header.stamp.nsec, 0u);
-  auto hi = ros_conv::to_percept(Stamped("4294967295.999999999"));
+  auto hi = node::to_percept(Stamped("4294967295.999999999"));
   EXPECT_EQ(hi.header.stamp.sec, 4294967295u);
   EXPECT_EQ(hi.header.stamp.nsec, 999999999u);
 }
@@ -115,16 +115,16 @@ TEST(Conversions, TimesOutsideRosTimeAreRejectedNotWrapped) {
 TEST(Conversions, RosValuesNoDecoderAcceptsAreRefused) {
   auto p = Sample();
   p.objects[0].attributes[0].reliability = 1.25;
-  EXPECT_THROW(encode_xml(ros_conv::from_percept(p)), XmlError);
+  EXPECT_THROW(encode_xml(node::from_percept(p)), XmlError);
   p = Sample();
   p.objects[1].attributes[0].variability = -0.5;
-  EXPECT_THROW(encode_xml(ros_conv::from_percept(p)), XmlError);
+  EXPECT_THROW(encode_xml(node::from_percept(p)), XmlError);
   mrt_msgs::CrispDataArray c;
   mrt_msgs::CrispData d;
   d.name = "x";
   d.reliability = 2;
   c.data.push_back(d);
-  EXPECT_THROW(encode_xml(ros_conv::from_crisp_data(c)), XmlError);
+  EXPECT_THROW(encode_xml(node::from_crisp_data(c)), XmlError);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ std::string read(const std::string& name) {
 }
 
 mrt_msgs::RefereeCommand through_xml(const mrt_msgs::RefereeCommand& r) {
-  return ros_conv::to_referee(decode_xml(encode_xml(ros_conv::from_referee(r))));
+  return node::to_referee(decode_xml(encode_xml(node::from_referee(r))));
 }
 
 TEST(RefereeConversions, RoundTripThroughXmlTextIsExact) {
@@ -48,7 +48,7 @@ TEST(RefereeConversions, RoundTripThroughXmlTextIsExact) {
 }
 
 TEST(RefereeConversions, DocumentedGoalDecodesToTheValuesWritten) {
-  const auto r = ros_conv::to_referee(decode_xml(read("referee_goal.xml")));
+  const auto r = node::to_referee(decode_xml(read("referee_goal.xml")));
   EXPECT_EQ(r.header.stamp.sec, 1763776012u);
   EXPECT_EQ(r.header.stamp.nsec, 500000000u);
   EXPECT_EQ(r.header.frame_id, "world");
@@ -65,7 +65,7 @@ TEST(RefereeConversions, DocumentedGoalDecodesToTheValuesWritten) {
 void expect_refused(const std::string& doc, const char* what) {
   const XmlMessage x = decode_xml(doc);  // valid MRT XML: the shape is wrong
   try {
-    ros_conv::to_referee(x);
+    node::to_referee(x);
     ADD_FAILURE() << "accepted: " << doc;
   } catch (const XmlError& e) {
     EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
@@ -98,14 +98,14 @@ TEST(RefereeConversions, WrongShapesAreRefused) {
 TEST(RefereeConversions, RosMessagesXmlCannotCarryAreRefused) {
   mrt_msgs::RefereeCommand r;
   r.command = mrt_msgs::RefereeCommand::GOAL;
-  EXPECT_THROW(ros_conv::from_referee(r), XmlError);  // no name
+  EXPECT_THROW(node::from_referee(r), XmlError);  // no name
   r.name = "goal";
   r.teams = {"cyan", "magenta"};
   r.score = {1};
-  EXPECT_THROW(ros_conv::from_referee(r), XmlError);  // a score short of a team
+  EXPECT_THROW(node::from_referee(r), XmlError);  // a score short of a team
   r.score = {1, 0};
   r.teams[1] = "";
-  EXPECT_THROW(ros_conv::from_referee(r), XmlError);  // a team without a name
+  EXPECT_THROW(node::from_referee(r), XmlError);  // a team without a name
 }
 
 }  // namespace

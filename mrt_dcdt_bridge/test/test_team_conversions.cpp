@@ -81,7 +81,7 @@ mrt_msgs::CoordinationParameters SampleCoordination() {
 
 TEST(TeamConversions, WorldModelRoundTripThroughXmlTextIsExact) {
   const auto w = SampleModel();
-  const auto v = ros_conv::to_world_model(decode_xml(encode_xml(ros_conv::from_world_model(w))));
+  const auto v = node::to_world_model(decode_xml(encode_xml(node::from_world_model(w))));
   // The generated messages compare member by member (header included):
   // stamp, every covariance entry, ids, sources, parameters bit-exact.
   EXPECT_TRUE(v == w);
@@ -92,13 +92,13 @@ TEST(TeamConversions, WorldModelRoundTripThroughXmlTextIsExact) {
 
 TEST(TeamConversions, CoordinationRoundTripThroughXmlTextIsExact) {
   auto c = SampleCoordination();
-  auto d = ros_conv::to_coordination(decode_xml(encode_xml(ros_conv::from_coordination(c))));
+  auto d = node::to_coordination(decode_xml(encode_xml(node::from_coordination(c))));
   EXPECT_TRUE(d == c);
   // A leaving message (no intention, no vectors) too.
   c = mrt_msgs::CoordinationParameters();
   c.robot_id = "robot2";
   c.leaving = true;
-  d = ros_conv::to_coordination(decode_xml(encode_xml(ros_conv::from_coordination(c))));
+  d = node::to_coordination(decode_xml(encode_xml(node::from_coordination(c))));
   EXPECT_TRUE(d == c);
   EXPECT_TRUE(d.leaving);
   EXPECT_EQ(d.intention, "");
@@ -106,7 +106,7 @@ TEST(TeamConversions, CoordinationRoundTripThroughXmlTextIsExact) {
 }
 
 TEST(TeamConversions, DocumentedWorldModelDecodesToTheValuesWritten) {
-  const auto w = ros_conv::to_world_model(decode_xml(read("world_model_robot2.xml")));
+  const auto w = node::to_world_model(decode_xml(read("world_model_robot2.xml")));
   EXPECT_EQ(w.header.stamp.sec, 1763776000u);
   EXPECT_EQ(w.header.stamp.nsec, 250000000u);
   EXPECT_EQ(w.header.frame_id, "map");
@@ -132,7 +132,7 @@ TEST(TeamConversions, DocumentedWorldModelDecodesToTheValuesWritten) {
 }
 
 TEST(TeamConversions, DocumentedCoordinationDecodesToTheValuesWritten) {
-  const auto c = ros_conv::to_coordination(decode_xml(read("coordination_robot2.xml")));
+  const auto c = node::to_coordination(decode_xml(read("coordination_robot2.xml")));
   EXPECT_EQ(c.robot_id, "robot2");
   EXPECT_EQ(c.header.stamp.nsec, 100000000u);
   EXPECT_EQ(c.seq, 42u);
@@ -151,8 +151,8 @@ TEST(TeamConversions, DocumentedCoordinationDecodesToTheValuesWritten) {
 void expect_refused(const std::string& doc, const char* what, bool world) {
   const XmlMessage x = decode_xml(doc);  // valid MRT XML: the shape is wrong
   try {
-    if (world) ros_conv::to_world_model(x);
-    else ros_conv::to_coordination(x);
+    if (world) node::to_world_model(x);
+    else node::to_coordination(x);
     ADD_FAILURE() << "accepted: " << doc;
   } catch (const XmlError& e) {
     EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
@@ -199,13 +199,13 @@ TEST(TeamConversions, WrongShapesAreRefused) {
 TEST(TeamConversions, RosMessagesXmlCannotCarryAreRefused) {
   auto w = SampleModel();
   w.anchors[0].sources.push_back("");
-  EXPECT_THROW(ros_conv::from_world_model(w), XmlError);
+  EXPECT_THROW(node::from_world_model(w), XmlError);
   w = SampleModel();
   w.anchors[0].x = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(encode_xml(ros_conv::from_world_model(w)), XmlError);
+  EXPECT_THROW(encode_xml(node::from_world_model(w)), XmlError);
   auto c = SampleCoordination();
   c.time.pop_back();  // a malformed message: vectors of different lengths
-  EXPECT_THROW(ros_conv::from_coordination(c), XmlError);
+  EXPECT_THROW(node::from_coordination(c), XmlError);
 }
 
 }  // namespace

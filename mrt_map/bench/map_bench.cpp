@@ -392,10 +392,10 @@ void cycle_time(const ConceptualModel& model) {
     for (const Vec2& p : objects) {
       PerceptObject o;
       o.membership_class = "Robot";
-      o.attributes["color"].symbol = "cyan";
+      o.attributes.push_back({"color", 0.0, "cyan", 0.0, 1.0});
       const Vec2 d = p - Vec2(pose.x, pose.y);
-      o.attributes["distance"] = {d.norm() + noise(rng), "", 0.02, 1.0};
-      o.attributes["bearing"] = {std::atan2(d.y(), d.x()), "", 0.005, 1.0};
+      o.set("distance", d.norm() + noise(rng), 0.02, 1.0);
+      o.set("bearing", std::atan2(d.y(), d.x()), 0.005, 1.0);
       out.push_back(o);
     }
     return out;

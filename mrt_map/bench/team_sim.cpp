@@ -198,10 +198,9 @@ std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose
     // Measured relative to the TRUE pose; interpreted from the believed one.
     PerceptObject o;
     o.membership_class = cls;
-    o.attributes["color"].symbol = color;
-    o.attributes["distance"] = {dist + sd * n(rng_), "", sd, 1.0};
-    o.attributes["bearing"] = {std::atan2(d.y(), d.x()) - heading + cam.sigma_bearing * n(rng_), "",
-                               cam.sigma_bearing, 1.0};
+    o.attributes.push_back({"color", 0.0, color, 0.0, 1.0});
+    o.set("distance", dist + sd * n(rng_), sd, 1.0);
+    o.set("bearing", std::atan2(d.y(), d.x()) - heading + cam.sigma_bearing * n(rng_), cam.sigma_bearing, 1.0);
     out.push_back(std::move(o));
   };
   observe(ball_.p, "Ball", "orange", i, -1);
@@ -212,10 +211,10 @@ std::vector<PerceptObject> TeamSim::see(int i, const CameraModel& cam, RobotPose
   if (u(rng_) < cam.clutter_rate) {  // a false ball somewhere in view
     PerceptObject o;
     o.membership_class = "Ball";
-    o.attributes["color"].symbol = "orange";
+    o.attributes.push_back({"color", 0.0, "orange", 0.0, 1.0});
     const double dist = cam.range * std::sqrt(u(rng_)), b = 2 * M_PI * u(rng_);
-    o.attributes["distance"] = {dist, "", cam.sigma_d0 + cam.sigma_d_rel * dist + cam.sigma_d_quad * dist * dist, 1.0};
-    o.attributes["bearing"] = {b, "", cam.sigma_bearing, 1.0};
+    o.set("distance", dist, cam.sigma_d0 + cam.sigma_d_rel * dist + cam.sigma_d_quad * dist * dist, 1.0);
+    o.set("bearing", b, cam.sigma_bearing, 1.0);
     out.push_back(std::move(o));
   }
   return out;

@@ -29,13 +29,13 @@ std::optional<double> Classifier::degree(const PerceptObject& object, int c, int
   double d = 1.0;
   for (int k = c; k >= 0 && k != from; k = model_.at(k).parent) {
     for (const AttributeMatcher& m : model_.at(k).matchers) {
-      const auto it = object.attributes.find(m.attribute);
-      if (it == object.attributes.end()) {
+      const PerceptAttribute* a = object.find(m.attribute);
+      if (!a) {
         if (require_all) return std::nullopt;
         continue;
       }
-      if (m.set && !it->second.symbol.empty()) return std::nullopt;  // wrong kind
-      d = std::min(d, m.match(it->second.value, it->second.symbol));
+      if (m.set && !a->symbol.empty()) return std::nullopt;  // wrong kind
+      d = std::min(d, m.match(a->value, a->symbol));
     }
   }
   return d;
@@ -81,7 +81,7 @@ std::optional<Classification> Classifier::classify(const PerceptObject& object, 
 
 namespace {
 bool finite(const PerceptObject& o) {
-  for (const auto& [name, a] : o.attributes)
+  for (const PerceptAttribute& a : o.attributes)
     if (!std::isfinite(a.value) || !std::isfinite(a.variability) || !std::isfinite(a.reliability)) return false;
   return true;
 }
@@ -92,9 +92,10 @@ std::optional<Observation> Classifier::observe(const PerceptObject& object, cons
                                                Rejection* why) const {
   Rejection r = Rejection::kNone;
   if (!finite(object)) r = Rejection::kNonFinite;
-  const auto& a = object.attributes;
-  const bool polar = a.count("distance") && a.count("bearing");
-  const bool cart = a.count("x") && a.count("y");
+  const PerceptAttribute *ad = object.find("distance"), *ab = object.find("bearing");
+  const PerceptAttribute *ax = object.find("x"), *ay = object.find("y");
+  const bool polar = ad && ab;
+  const bool cart = ax && ay;
   if (r == Rejection::kNone && !polar && !cart) r = Rejection::kNoPosition;
   std::optional<Classification> c;
   if (r == Rejection::kNone) c = classify(object, &r);
@@ -108,16 +109,16 @@ std::optional<Observation> Classifier::observe(const PerceptObject& object, cons
   Mat2 cov_rel;
   if (polar) {
     // Polar to Cartesian: J = [cos b, -d sin b; sin b, d cos b].
-    const double d = a.at("distance").value, b = a.at("bearing").value;
-    const double sd = sigma(a.at("distance"), 1.0);
-    const double sb = a.at("bearing").variability > 0 ? a.at("bearing").variability : def / std::max(d, 1e-3);
+    const double d = ad->value, b = ab->value;
+    const double sd = sigma(*ad, 1.0);
+    const double sb = ab->variability > 0 ? ab->variability : def / std::max(d, 1e-3);
     rel << d * std::cos(b), d * std::sin(b);
     Mat2 J;
     J << std::cos(b), -d * std::sin(b), std::sin(b), d * std::cos(b);
     cov_rel = J * Eigen::Vector2d(sd * sd, sb * sb).asDiagonal() * J.transpose();
   } else {
-    rel << a.at("x").value, a.at("y").value;
-    const double sx = sigma(a.at("x"), 1.0), sy = sigma(a.at("y"), 1.0);
+    rel << ax->value, ay->value;
+    const double sx = sigma(*ax, 1.0), sy = sigma(*ay, 1.0);
     cov_rel = Eigen::Vector2d(sx * sx, sy * sy).asDiagonal();
   }
   Mat2 Rot;

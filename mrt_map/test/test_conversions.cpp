@@ -15,9 +15,9 @@ const char* kModel =
 PerceptObject ball(double x, double y) {
   PerceptObject o;
   o.membership_class = "Ball";
-  o.attributes["color"].symbol = "orange";
-  o.attributes["x"] = {x, "", 0.1, 1.0};
-  o.attributes["y"] = {y, "", 0.2, 1.0};
+  o.attributes.push_back({"color", 0.0, "orange", 0.0, 1.0});
+  o.set("x", x, 0.1, 1.0);
+  o.set("y", y, 0.2, 1.0);
   return o;
 }
 }  // namespace
@@ -35,12 +35,12 @@ TEST(Conversions, OwnTracksRoundTrip) {
   ASSERT_EQ(own.size(), 1u);
   const ros::Time stamp(10.1);
   // Through the team topic: every field back, full covariance.
-  const mrt_msgs::WorldModel msg = ros_conv::to_msg(w, own, "map", stamp);
+  const mrt_msgs::WorldModel msg = node::to_msg(w, own, "map", stamp);
   ASSERT_EQ(msg.anchors.size(), 1u);
   EXPECT_TRUE(msg.local_only);
   EXPECT_EQ(msg.robot, "r1");
   RemoteTrack back;
-  ASSERT_TRUE(ros_conv::from_msg(msg.anchors[0], m, stamp, back));
+  ASSERT_TRUE(node::from_msg(msg.anchors[0], m, stamp, back));
   EXPECT_EQ(back.id, own[0].id);
   EXPECT_NEAR(back.estimate.x(0), 3.0, 1e-12);
   EXPECT_NEAR(back.estimate.x(1), 1.0, 1e-12);
@@ -50,21 +50,8 @@ TEST(Conversions, OwnTracksRoundTrip) {
   // A non-positive covariance or an unknown class is refused.
   mrt_msgs::Anchor bad = msg.anchors[0];
   bad.covariance[0] = -1.0;
-  EXPECT_FALSE(ros_conv::from_msg(bad, m, stamp, back));
+  EXPECT_FALSE(node::from_msg(bad, m, stamp, back));
   bad = msg.anchors[0];
   bad.membership_class = "Cat";
-  EXPECT_FALSE(ros_conv::from_msg(bad, m, stamp, back));
-  // Through the DCDT form: position, velocity, their variances and the x-y
-  // covariance survive (position-velocity correlations do not).
-  const mrt_msgs::Percept p = ros_conv::to_dcdt_percept(w, own, "map", stamp);
-  ASSERT_EQ(p.objects.size(), 1u);
-  EXPECT_EQ(p.sensor, "map");
-  const auto legacy = ros_conv::from_dcdt_percept(p, m);
-  ASSERT_EQ(legacy.size(), 1u);
-  EXPECT_EQ(legacy[0].robot, "r1");
-  EXPECT_EQ(legacy[0].id, own[0].id);
-  EXPECT_NEAR(legacy[0].estimate.x(0), 3.0, 1e-12);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(legacy[0].estimate.P(i, i), own[0].estimate.P(i, i), 1e-12);
-  EXPECT_NEAR(legacy[0].estimate.P(0, 1), own[0].estimate.P(0, 1), 1e-12);
-  EXPECT_NEAR(legacy[0].last_seen, 10.1, 1e-6);
+  EXPECT_FALSE(node::from_msg(bad, m, stamp, back));
 }

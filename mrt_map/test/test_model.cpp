@@ -15,8 +15,8 @@ ConceptualModel test_model() { return ConceptualModel::load(MRT_MAP_TEST_DATA "/
 PerceptObject object(const std::string& cls, const std::string& color, double diameter = NAN) {
   PerceptObject o;
   o.membership_class = cls;
-  if (!color.empty()) o.attributes["color"].symbol = color;
-  if (!std::isnan(diameter)) o.attributes["diameter"].value = diameter;
+  if (!color.empty()) o.attributes.push_back({"color", 0.0, color, 0.0, 1.0});
+  if (!std::isnan(diameter)) o.set("diameter", diameter);
   return o;
 }
 
@@ -112,8 +112,8 @@ TEST(Classifier, PlacesPolarPerceptInTheWorld) {
   const ConceptualModel m = test_model();
   const Classifier c(m);
   PerceptObject o = object("Robot", "cyan");
-  o.attributes["distance"] = {2.0, "", 0.2, 1.0};
-  o.attributes["bearing"] = {M_PI / 2, "", 0.05, 1.0};
+  o.set("distance", 2.0, 0.2, 1.0);
+  o.set("bearing", M_PI / 2, 0.05, 1.0);
   RobotPose pose;
   pose.x = 1;
   pose.y = 1;
@@ -134,7 +134,7 @@ TEST(Classifier, PlacesPolarPerceptInTheWorld) {
   EXPECT_EQ(m.at(obs->class_index).name, "Opponent");
   EXPECT_EQ(obs->sensors.count("r1/cam"), 1u);
   Rejection why = Rejection::kNone;
-  o.attributes["distance"].value = NAN;
+  o.set("distance", NAN);
   EXPECT_FALSE(c.observe(o, pose, 5.0, "r1", "cam", &why));
   EXPECT_EQ(why, Rejection::kNonFinite);
   EXPECT_FALSE(c.observe(object("Robot", "cyan"), pose, 5.0, "r1", "cam", &why));

@@ -101,7 +101,7 @@ TEST(TeamSim, CameraDetectionFallOffAndNoise) {
       if (o.membership_class != "Ball") continue;
       ASSERT_TRUE(in_view);
       ++detected;
-      EXPECT_NEAR(o.attributes.at("distance").variability, 0.005 + 0.01 * d + 0.001 * d * d, 1e-12);
+      EXPECT_NEAR(o.find("distance")->variability, 0.005 + 0.01 * d + 0.001 * d * d, 1e-12);
     }
   }
   ASSERT_GT(expected, 500.0);  // the test means something

@@ -17,8 +17,8 @@ namespace {
 PerceptObject ball_at(double x, double y) {
   PerceptObject o;
   o.membership_class = "Ball";
-  o.attributes["x"] = {x, "", 0.05, 1.0};
-  o.attributes["y"] = {y, "", 0.05, 1.0};
+  o.set("x", x, 0.05, 1.0);
+  o.set("y", y, 0.05, 1.0);
   return o;
 }
 }  // namespace

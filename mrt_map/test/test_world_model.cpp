@@ -24,9 +24,9 @@ const char* kModel =
 PerceptObject at(const std::string& cls, const std::string& color, double x, double y) {
   PerceptObject o;
   o.membership_class = cls;
-  o.attributes["color"].symbol = color;
-  o.attributes["x"] = {x, "", 0.05, 1.0};
-  o.attributes["y"] = {y, "", 0.05, 1.0};
+  o.attributes.push_back({"color", 0.0, color, 0.0, 1.0});
+  o.set("x", x, 0.05, 1.0);
+  o.set("y", y, 0.05, 1.0);
   return o;
 }
 }  // namespace

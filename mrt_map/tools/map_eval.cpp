@@ -21,6 +21,7 @@
 
 #include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_common_ros/percept_conversions.h"
 #include "mrt_map/world_model.h"
 #include "ros/conversions.h"
 
@@ -81,6 +82,7 @@ int run(const Args& args) {
   if (!out) throw mrt::common::ParseError(args.out, 0, 0, "cannot write file");
   out << "stamp,robot,id,class,x,y,vx,vy,cov_xx,cov_xy,cov_yy,reliability,sources\n" << std::setprecision(9);
   std::size_t updates = 0, no_pose = 0;
+  mrt::common::PerceptDrops ontology_drops;
   rosbag::View view(bag, rosbag::TopicQuery(topics));
   mrt::cli::Progress progress("map_eval", view.size());
   double done = 0.0;
@@ -106,7 +108,7 @@ int run(const Args& args) {
     // The bag's receive time is "now" for the staleness check.
     const double now = m.getTime().toSec();
     w.set_robot_pose(pose, now);
-    w.add_percept(mrt::map::ros_conv::from_msg(*p), pose, p->header.stamp.toSec(), now,
+    w.add_percept(mrt::ros_common::accepted_objects(*p, ontology_drops), pose, p->header.stamp.toSec(), now,
                   p->sensor.empty() ? "sensor" : p->sensor);
     w.update(now);
     ++updates;
@@ -118,6 +120,7 @@ int run(const Args& args) {
   }
   std::cerr << "map_eval: " << updates << " updates of " << robots.size() << " robots";
   if (no_pose) std::cerr << ", " << no_pose << " percepts without a pose dropped";
+  if (ontology_drops.total()) std::cerr << ", " << ontology_drops.total() << " objects not in the ontology dropped";
   for (const auto& [name, w] : team) {
     const auto& c = w->counters();
     const auto dropped = c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.outside_world;

@@ -8,56 +8,32 @@
 #include <map>
 #include <sstream>
 
-#include "mrt_common/csv.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_common/percept_csv.h"
 
 namespace mrt::murea {
 
-using mrt::common::CsvReader;
-using mrt::common::CsvRow;
 using mrt::common::ParseError;
 
-namespace {
-
-const std::vector<std::string> kColumns{"frame", "class", "color", "distance", "bearing", "reliability"};
-
-// A number; nan and inf are returned as such (the caller drops them).
-double parse_number(const CsvReader& csv, const CsvRow& row, std::size_t col) {
-  const std::string& s = row.fields[col];
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || (errno == ERANGE && std::isfinite(v) && v != 0.0))
-    throw ParseError(csv.file(), row.line, row.columns[col],
-                     "expected a number in column '" + kColumns[col] + "', got '" + s + "'");
-  return v;
-}
-
-}  // namespace
-
 std::vector<PerceptFrame> read_percept_csv(std::istream& in, const std::string& file) {
-  const CsvReader csv(in, file);
-  csv.require_header(kColumns);
   std::vector<PerceptFrame> frames;
-  std::map<std::string, std::size_t> index;
-  for (const CsvRow& row : csv.rows()) {
-    const std::string& id = row.fields[0];
-    if (id.empty()) throw ParseError(file, row.line, row.columns[0], "expected a frame id");
-    const double distance = parse_number(csv, row, 3), bearing = parse_number(csv, row, 4),
-                 reliability = parse_number(csv, row, 5);
-    auto [it, fresh] = index.emplace(id, frames.size());
-    if (fresh) frames.push_back({id, row.line, {}, {}});
-    PerceptFrame& f = frames[it->second];
-    const auto cls = parse_feature_class(row.fields[1]);
-    if (!cls) {
-      ++f.dropped.unknown_class;
-    } else if (!std::isfinite(distance) || !std::isfinite(bearing) || !std::isfinite(reliability)) {
-      ++f.dropped.non_finite;
-    } else if (distance < 0.0 || !(reliability > 0.0) || reliability > 1.0) {
-      ++f.dropped.out_of_range;
-    } else {
-      f.percepts.push_back({*cls, row.fields[2], distance, bearing, reliability});
+  for (const mrt::common::PerceptCsvFrame& f : mrt::common::read_percept_csv(in, file)) {
+    PerceptFrame out{f.id, f.line, {}, {}};
+    for (const mrt::common::PerceptObject& o : f.objects) {
+      const double distance = *o.number("distance"), bearing = *o.number("bearing");
+      const double reliability = o.find("distance")->reliability;
+      const auto cls = parse_feature_class(o.membership_class);
+      if (!cls) {
+        ++out.dropped.unknown_class;
+      } else if (!std::isfinite(distance) || !std::isfinite(bearing) || !std::isfinite(reliability)) {
+        ++out.dropped.non_finite;
+      } else if (distance < 0.0 || !(reliability > 0.0) || reliability > 1.0) {
+        ++out.dropped.out_of_range;
+      } else {
+        out.percepts.push_back({*cls, o.symbol("color"), distance, bearing, reliability});
+      }
     }
+    frames.push_back(std::move(out));
   }
   return frames;
 }

@@ -82,7 +82,7 @@ class Evaluator {
     std::cout << "frames: " << frames_ << "\nestimates: " << estimates_.size() << " (" << globals_
               << " global)\nskipped: " << no_odom_ << " without odometry, " << unknown_frame_
               << " in an unknown frame\ndropped percepts: " << drops_.non_finite << " non-finite, "
-              << drops_.non_map_class << " not a map class\n";
+              << drops_.non_map_class << " not a map class, " << drops_.ontology.total() << " not in the ontology\n";
     if (truth_.empty()) return;
     double d2 = 0, t2 = 0, worst = 0;
     std::size_t n = 0;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "mrt_common/omni_camera_yaml.h"
+#include "mrt_common/ontology.h"
 #include "mrt_common/yaml_reader.h"
 
 namespace mrt::recvision {
@@ -108,7 +109,8 @@ ObjectKind read_kind(const YamlReader& r, const YAML::Node& n) {
   r.map(n, "kinds", {"class", "colors", "radius", "width"});
   ObjectKind k;
   k.membership_class = r.string(r.required(n, "class", "kinds"), "class");
-  if (k.membership_class.empty()) r.fail(n["class"], "expected a non-empty class name");
+  if (!mrt::common::Ontology::standard().find_class(k.membership_class))
+    r.fail(n["class"], "expected a class of the ontology (mrt_common/ontology/mrt.yaml), got '" + k.membership_class + "'");
   k.colors = colors_of(r, r.required(n, "colors", "kinds"), "colors");
   k.radius = r.non_negative(n, "radius", 0.0);
   if (n["width"]) {

@@ -10,6 +10,15 @@
 
 namespace mrt::recvision {
 
+mrt::common::PerceptObject to_percept_object(const Detection& d) {
+  mrt::common::PerceptObject o("", d.membership_class);
+  const double sxy = std::hypot(d.sigma_distance, d.distance * d.sigma_bearing);
+  o.set("distance", d.distance, d.sigma_distance, d.reliability).set("bearing", d.bearing, d.sigma_bearing, d.reliability);
+  o.set("x", d.x, sxy, d.reliability).set("y", d.y, sxy, d.reliability);
+  o.set_symbol("color", color_name(d.color), d.reliability);
+  return o;
+}
+
 namespace {
 constexpr auto kOrange = static_cast<std::uint8_t>(ColorClass::kOrange);
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "mrt_common/percept_csv.h"
 #include "mrt_common/testing/cli_runner.h"
 #include "mrt_recvision/calibration.h"
 #include "synthetic_scene.h"
@@ -65,7 +66,7 @@ TEST(Cli, RunWritesTheBallOfAnImageAsCsv) {
   std::istringstream in(r.text);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "stamp,class,color,distance,bearing,reliability");
+  EXPECT_EQ(line, "frame,class,color,distance,bearing,reliability");  // the stack's percept CSV
   int balls = 0;
   while (std::getline(in, line)) {
     double stamp = 0, dist = 0, bearing = 0, rel = 0;
@@ -80,6 +81,15 @@ TEST(Cli, RunWritesTheBallOfAnImageAsCsv) {
     ++balls;
   }
   EXPECT_EQ(balls, 2);
+  // The one percept CSV format: what murea_localize reads (its reader is
+  // mrt_common's) takes the output as it is: two frames of one ball.
+  std::istringstream again(r.text);
+  const auto frames = mrt::common::read_percept_csv(again, "recvision_run");
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[1].id, "1.000000");
+  ASSERT_EQ(frames[1].objects.size(), 1u);
+  EXPECT_EQ(frames[1].objects[0].membership_class, "Ball");
+  EXPECT_NEAR(*frames[1].objects[0].number("distance"), std::sqrt(5.0), 0.02 * std::sqrt(5.0));
   EXPECT_EQ(cr::err(RECVISION_RUN, "--calib " + kCalib + " /nonexistent.png").code, 1);
 }
 

@@ -1,8 +1,9 @@
 // recvision_run --calib FILE (--bag B.bag [--topic T] | IMAGE...)
 // Runs RecVision on a bag's sensor_msgs/Image messages or on image files and
-// writes every percept as CSV on stdout:
-//   stamp,class,color,distance,bearing,reliability
-// (stamp: the message's header stamp, or the image's position in the list;
+// writes every percept on stdout in the stack's percept CSV format
+// (mrt_common/percept_csv.h, what murea_localize reads):
+//   frame,class,color,distance,bearing,reliability
+// (frame: the message's header stamp, or the image's position in the list;
 // distance m and bearing rad in base_link, with the calibration's mount).
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -16,6 +17,7 @@
 
 #include "mrt_common/cli.h"
 #include "mrt_common/parse_error.h"
+#include "mrt_common/percept_csv.h"
 #include "mrt_recvision/detector.h"
 
 using namespace mrt::recvision;
@@ -23,9 +25,9 @@ using namespace mrt::recvision;
 namespace {
 
 void write(double stamp, const std::vector<Detection>& dets) {
-  for (const Detection& d : dets)
-    std::printf("%.6f,%s,%s,%.4f,%.5f,%.3f\n", stamp, d.membership_class.c_str(), color_name(d.color), d.distance,
-                d.bearing, d.reliability);
+  char frame[32];
+  std::snprintf(frame, sizeof frame, "%.6f", stamp);
+  for (const Detection& d : dets) mrt::common::write_percept_csv_row(std::cout, frame, to_percept_object(d));
 }
 
 // The image topic to read: `topic`, or the bag's only sensor_msgs/Image topic.
@@ -70,7 +72,7 @@ int run_bag(Detector& det, const std::string& path, const std::string& topic) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"RecVision on a bag or on image files: percepts as CSV (stamp,class,color,distance,bearing,reliability)",
+  CLI::App app{"RecVision on a bag or on image files: percepts as CSV (frame,class,color,distance,bearing,reliability: the percept CSV murea_localize reads)",
                "recvision_run"};
   std::string calib, bag_path, topic;
   std::vector<std::string> images;
@@ -86,7 +88,7 @@ int main(int argc, char** argv) {
   }
   try {
     Detector det(load_calibration(calib));
-    std::printf("stamp,class,color,distance,bearing,reliability\n");
+    mrt::common::write_percept_csv_header(std::cout);
     if (!bag_path.empty()) return run_bag(det, bag_path, topic);
     ImageFileSource src(images);
     Frame f;

@@ -14,14 +14,13 @@ std::vector<map::PerceptObject> team_percepts(const sim::World& w, const std::ve
   std::normal_distribution<double> n01(0.0, 1.0);
   std::vector<map::PerceptObject> out;
   for (const sim::SeenObject& s : sim::vision_percepts(w, others, pose, cfg)) {
-    if (s.membership_class != "Ball" && s.membership_class != "Robot") continue;
-    map::PerceptObject p;
-    p.name = s.name;
-    p.membership_class = s.membership_class;
+    if (s.membership_class != common::percept_class::kBall && s.membership_class != common::percept_class::kRobot)
+      continue;
+    map::PerceptObject p(s.name, s.membership_class);
     const double sd = std::max(distance_noise * s.distance, 0.01), sb = std::max(bearing_noise, 1e-3);
-    p.attributes["distance"] = {std::max(0.0, s.distance + sd * n01(rng)), "", sd, 1.0};
-    p.attributes["bearing"] = {s.bearing + sb * n01(rng), "", sb, 1.0};
-    p.attributes["color"] = {0.0, s.color, 0.0, 1.0};
+    const double d = std::max(0.0, s.distance + sd * n01(rng));  // the distance's draw first
+    p.set("distance", d, sd).set("bearing", s.bearing + sb * n01(rng), sb);
+    p.attributes.push_back({"color", 0.0, s.color, 0.0, 1.0});
     out.push_back(std::move(p));
   }
   return out;

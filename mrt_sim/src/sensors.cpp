@@ -8,6 +8,14 @@
 
 namespace mrt::sim {
 
+mrt::common::PerceptObject to_percept_object(const SeenObject& s, const SensorsConfig& cfg) {
+  mrt::common::PerceptObject o(s.name, s.membership_class);
+  const double sd = cfg.vision_distance_noise * s.distance;
+  o.set_polar({s.distance, s.bearing, sd, cfg.vision_bearing_noise, 1.0});
+  o.set_symbol("color", s.color);
+  return o;
+}
+
 using mrt::common::kPi;
 using mrt::common::normalize_angle;
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "mrt_common/angle.h"
+#include "mrt_common/ontology.h"
 #include "mrt_common/parse_error.h"
 
 namespace mrt::world {
@@ -51,6 +52,9 @@ Post post(const YamlReader& r, const Node& n) {
   Post p;
   p.name = r.string(n, "name", "", true, "posts");
   p.membership_class = r.string(n, "class", "Obstacle", false, "posts");
+  if (!mrt::common::Ontology::standard().find_class(p.membership_class))
+    r.fail(n["class"], "expected a class of the ontology (mrt_common/ontology/mrt.yaml) for post '" + p.name +
+                           "', got '" + p.membership_class + "'");
   p.color = r.string(n, "color", "", false, "posts");
   p.center = {r.number(r.required(n, "x", "posts"), "x"), r.number(r.required(n, "y", "posts"), "y")};
   p.radius = r.positive(n, "radius", p.radius);

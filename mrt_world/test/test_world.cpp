@@ -115,6 +115,9 @@ TEST(WorldLoader, ErrorsNameFileLineColumn) {
   EXPECT_NE(e.message().find("xmin < xmax"), std::string::npos) << e.what();
   e = error_of("name: x\nbounds: [0, 0, 1, 1]\ndoors:\n  - {name: d}\n");
   EXPECT_NE(e.message().find("missing required key 'wall'"), std::string::npos) << e.what();
+  e = error_of("name: x\nbounds: [0, 0, 1, 1]\nposts:\n  - {name: p, class: Unicorn, x: 0, y: 0}\n");
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_NE(e.message().find("expected a class of the ontology"), std::string::npos) << e.what();
   e = error_of("bounds: [0, 0, 1, 1]\n");
   EXPECT_NE(e.message().find("'name'"), std::string::npos) << e.what();
   e = error_of("");

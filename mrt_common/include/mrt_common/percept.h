@@ -73,7 +73,8 @@ struct PerceptObject {
   std::vector<Attribute> attributes;
 
   PerceptObject() = default;
-  PerceptObject(std::string n, std::string cls) : name(std::move(n)), membership_class(std::move(cls)) {}
+  PerceptObject(std::string n, std::string cls, std::vector<Attribute> attrs = {})
+      : name(std::move(n)), membership_class(std::move(cls)), attributes(std::move(attrs)) {}
 
   /// The attribute named `n` (the first), nullptr if none.
   const Attribute* find(std::string_view n) const {

@@ -10,21 +10,15 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/percept.h"
+
 namespace mrt::dcdt {
 
-struct XmlAttribute {
-  std::string name;
-  double value = 0.0;
-  std::string symbol;  ///< non-empty: a symbolic value (then value is 0)
-  double variability = 0.0;
-  double reliability = 1.0;
-};
-
-struct XmlObject {
-  std::string name;
-  std::string membership_class;  ///< the XML `class` attribute
-  std::vector<XmlAttribute> attributes;
-};
+/// An object of the message and its attributes are the stack's percept
+/// types (mrt_common/percept.h): name, class (the XML `class` attribute),
+/// attributes (name, value or a non-empty symbol, variability, reliability).
+using XmlAttribute = mrt::common::Attribute;
+using XmlObject = mrt::common::PerceptObject;
 
 struct XmlMessage {
   int64_t sec = 0;     ///< time stamp, seconds since the Unix epoch

@@ -2,7 +2,9 @@
 
 #include <cstdint>
 
-namespace mrt::dcdt::ros_conv {
+#include "mrt_common_ros/percept_conversions.h"
+
+namespace mrt::dcdt::node {
 
 void stamp_to(const std_msgs::Header& h, XmlMessage* x) {
   x->sec = h.stamp.sec;
@@ -33,11 +35,7 @@ XmlMessage from_percept(const mrt_msgs::Percept& p) {
   stamp_to(p.header, &x);
   x.sensor = p.sensor;
   x.robot = p.robot;
-  for (const auto& o : p.objects) {
-    XmlObject xo{o.name, o.membership_class, {}};
-    for (const auto& a : o.attributes) xo.attributes.push_back({a.name, a.value, a.symbol, a.variability, a.reliability});
-    x.objects.push_back(std::move(xo));
-  }
+  for (const auto& o : p.objects) x.objects.push_back(mrt::ros_common::from_msg(o));
   return x;
 }
 
@@ -46,21 +44,7 @@ mrt_msgs::Percept to_percept(const XmlMessage& x) {
   stamp_from(x, &p.header);
   p.sensor = x.sensor;
   p.robot = x.robot;
-  for (const auto& o : x.objects) {
-    mrt_msgs::PerceptObject po;
-    po.name = o.name;
-    po.membership_class = o.membership_class;
-    for (const auto& a : o.attributes) {
-      mrt_msgs::Attribute at;
-      at.name = a.name;
-      at.value = a.value;
-      at.symbol = a.symbol;
-      at.variability = a.variability;
-      at.reliability = a.reliability;
-      po.attributes.push_back(at);
-    }
-    p.objects.push_back(po);
-  }
+  for (const auto& o : x.objects) p.objects.push_back(mrt::ros_common::to_msg(o));
   return p;
 }
 
@@ -104,4 +88,4 @@ mrt_msgs::CommandArray to_commands(const XmlMessage& x) {
   return c;
 }
 
-}  // namespace mrt::dcdt::ros_conv
+}  // namespace mrt::dcdt::node

@@ -8,7 +8,7 @@
 
 #include "mrt_dcdt/xml_message.h"
 
-namespace mrt::dcdt::ros_conv {
+namespace mrt::dcdt::node {
 
 /// The header's stamp and frame into the XML message's time and frame.
 void stamp_to(const std_msgs::Header& h, XmlMessage* x);
@@ -29,4 +29,4 @@ mrt_msgs::CrispDataArray to_crisp_data(const XmlMessage& x);
 XmlMessage from_commands(const mrt_msgs::CommandArray& c);
 mrt_msgs::CommandArray to_commands(const XmlMessage& x);
 
-}  // namespace mrt::dcdt::ros_conv
+}  // namespace mrt::dcdt::node

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace mrt::dcdt::ros_conv {
+namespace mrt::dcdt::node {
 
 namespace {
 
@@ -320,4 +320,4 @@ mrt_msgs::RefereeCommand to_referee(const XmlMessage& x) {
   return r;
 }
 
-}  // namespace mrt::dcdt::ros_conv
+}  // namespace mrt::dcdt::node

@@ -9,7 +9,7 @@
 
 #include "mrt_dcdt/xml_message.h"
 
-namespace mrt::dcdt::ros_conv {
+namespace mrt::dcdt::node {
 
 /// One object of class "WorldModel" (the producer: local_only, pose and its
 /// covariance), one of class "Anchor" per anchor (name = id), one of class
@@ -33,4 +33,4 @@ mrt_msgs::CoordinationParameters to_coordination(const XmlMessage& x);
 XmlMessage from_referee(const mrt_msgs::RefereeCommand& r);
 mrt_msgs::RefereeCommand to_referee(const XmlMessage& x);
 
-}  // namespace mrt::dcdt::ros_conv
+}  // namespace mrt::dcdt::node

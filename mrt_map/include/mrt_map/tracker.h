@@ -55,8 +55,8 @@ class Tracker {
 
  private:
   void associate_local(double now, const std::vector<Observation>& obs);
-  void associate_remote(double now, std::vector<RemoteTrack>& remote);  // tracker_team.cpp
-  void fuse(double now);                                                // tracker_team.cpp
+  void associate_remote(double now, std::vector<RemoteTrack>& remote);
+  void fuse(double now);
   void coalesce();
   void life_cycle(double now);
   void refine_teammates(double now);

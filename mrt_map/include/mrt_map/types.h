@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/percept.h"
+
 namespace mrt::map {
 
 using Vec2 = Eigen::Vector2d;
@@ -18,22 +20,11 @@ using Mat2 = Eigen::Matrix2d;
 using Vec4 = Eigen::Vector4d;  // x, y, vx, vy
 using Mat4 = Eigen::Matrix4d;
 
-/// One attribute of a percept object (mrt_msgs/Attribute): numeric when
-/// `symbol` is empty.
-struct PerceptAttribute {
-  double value = 0.0;
-  std::string symbol;
-  double variability = 0.0;  // one standard deviation, attribute's unit
-  double reliability = 1.0;
-};
-
-/// One object of a percept, relative to the observing robot (attributes
-/// `distance`/`bearing` or `x`/`y` in the robot frame, plus any others).
-struct PerceptObject {
-  std::string name;
-  std::string membership_class;
-  std::map<std::string, PerceptAttribute> attributes;
-};
+/// A percept object (mrt_common/percept.h: the stack's one percept type),
+/// relative to the observing robot: a position as `distance`/`bearing` or
+/// `x`/`y` in the robot frame, plus any other attributes of the ontology.
+using PerceptObject = mrt::common::PerceptObject;
+using PerceptAttribute = mrt::common::Attribute;
 
 /// A robot's planar pose in the world frame with the covariance of x, y and
 /// the standard deviation of theta.

@@ -4,20 +4,7 @@
 
 #include "mrt_map/kalman.h"
 
-namespace mrt::map::ros_conv {
-
-std::vector<PerceptObject> from_msg(const mrt_msgs::Percept& p) {
-  std::vector<PerceptObject> out;
-  out.reserve(p.objects.size());
-  for (const auto& o : p.objects) {
-    PerceptObject q;
-    q.name = o.name;
-    q.membership_class = o.membership_class;
-    for (const auto& a : o.attributes) q.attributes[a.name] = {a.value, a.symbol, a.variability, a.reliability};
-    out.push_back(std::move(q));
-  }
-  return out;
-}
+namespace mrt::map::node {
 
 namespace {
 void fill(mrt_msgs::Anchor& m, const Estimate& e) {
@@ -198,68 +185,4 @@ visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& 
   return out;
 }
 
-namespace {
-mrt_msgs::Attribute attr(const std::string& name, double value, double variability) {
-  mrt_msgs::Attribute a;
-  a.name = name;
-  a.value = value;
-  a.variability = variability;
-  a.reliability = 1.0;
-  return a;
-}
-}  // namespace
-
-mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
-                                  const ros::Time& stamp) {
-  mrt_msgs::Percept p;
-  p.header.stamp = stamp;
-  p.header.frame_id = frame;
-  p.sensor = "map";
-  p.robot = w.options().robot;
-  for (const RemoteTrack& t : tracks) {
-    mrt_msgs::PerceptObject o;
-    o.name = std::to_string(t.id);
-    o.membership_class = w.model().at(t.class_index).name;
-    const Mat4& P = t.estimate.P;
-    o.attributes = {attr("x", t.estimate.x(0), std::sqrt(P(0, 0))), attr("y", t.estimate.x(1), std::sqrt(P(1, 1))),
-                    attr("vx", t.estimate.x(2), std::sqrt(P(2, 2))), attr("vy", t.estimate.x(3), std::sqrt(P(3, 3))),
-                    attr("cov_xy", P(0, 1), 0.0), attr("last_seen_age", stamp.toSec() - t.last_seen, 0.0),
-                    attr("degree", t.degree, 0.0)};
-    p.objects.push_back(o);
-  }
-  return p;
-}
-
-std::vector<RemoteTrack> from_dcdt_percept(const mrt_msgs::Percept& p, const ConceptualModel& m) {
-  std::vector<RemoteTrack> out;
-  for (const auto& o : p.objects) {
-    std::map<std::string, const mrt_msgs::Attribute*> a;
-    for (const auto& x : o.attributes) a[x.name] = &x;
-    RemoteTrack t;
-    t.robot = p.robot;
-    t.class_index = m.find(o.membership_class);
-    bool ok = t.class_index >= 0;
-    for (const char* k : {"x", "y", "vx", "vy", "cov_xy", "last_seen_age", "degree"}) ok = ok && a.count(k);
-    if (!ok) continue;
-    try {
-      t.id = static_cast<std::uint32_t>(std::stoul(o.name));
-    } catch (const std::exception&) {
-      continue;
-    }
-    t.degree = a["degree"]->value;
-    t.estimate.x << a["x"]->value, a["y"]->value, a["vx"]->value, a["vy"]->value;
-    t.estimate.P = Vec4(std::pow(a["x"]->variability, 2), std::pow(a["y"]->variability, 2),
-                        std::pow(a["vx"]->variability, 2), std::pow(a["vy"]->variability, 2))
-                       .asDiagonal();
-    t.estimate.P(0, 1) = t.estimate.P(1, 0) = a["cov_xy"]->value;
-    t.estimate.stamp = p.header.stamp.toSec();
-    t.last_seen = t.estimate.stamp - a["last_seen_age"]->value;
-    t.sensors = {p.robot + "/map"};
-    if (!t.estimate.x.allFinite() || !t.estimate.P.allFinite() || Eigen::LLT<Mat4>(t.estimate.P).info() != Eigen::Success)
-      continue;
-    out.push_back(t);
-  }
-  return out;
-}
-
-}  // namespace mrt::map::ros_conv
+}  // namespace mrt::map::node

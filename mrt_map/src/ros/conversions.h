@@ -1,10 +1,10 @@
 // mrt_msgs <-> mrt_map core types, and the rviz markers of a world model.
-// Also the DCDT form of anchors: a mrt_msgs/Percept (what the DCDT bridge
-// carries as MRT XML) with one object per anchor.
+// Percepts come in through mrt_common_ros/percept_conversions.h; the team
+// exchange is mrt_msgs/WorldModel (over DCDT the bridge's world_model kind
+// carries it: the one DCDT encoding of the team world model).
 #pragma once
 
 #include <mrt_msgs/CrispDataArray.h>
-#include <mrt_msgs/Percept.h>
 #include <mrt_msgs/WorldModel.h>
 #include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -14,9 +14,7 @@
 
 #include "mrt_map/world_model.h"
 
-namespace mrt::map::ros_conv {
-
-std::vector<PerceptObject> from_msg(const mrt_msgs::Percept& p);
+namespace mrt::map::node {
 
 mrt_msgs::Anchor to_msg(const Anchor& a, const ConceptualModel& m, double reliability);
 /// The own-sensors track sent to the teammates.
@@ -38,14 +36,4 @@ mrt_msgs::CrispDataArray to_msg(const std::vector<CrispDatum>& data, const ros::
 /// coasting anchors; DELETEALL first so dropped anchors disappear.
 visualization_msgs::MarkerArray markers(const WorldModel& w, const std::string& frame, const ros::Time& stamp);
 
-/// DCDT form: a Percept (sensor "map", robot = producer, frame = world)
-/// with one object per own track: name = id, class, attributes x, y, vx,
-/// vy (variability = sigma), cov_xy, last_seen_age, degree; `tracks`:
-/// the caller's w.local_tracks().
-mrt_msgs::Percept to_dcdt_percept(const WorldModel& w, const std::vector<RemoteTrack>& tracks, const std::string& frame,
-                                  const ros::Time& stamp);
-/// The inverse, for a legacy teammate's anchors; objects that do not parse
-/// are skipped.
-std::vector<RemoteTrack> from_dcdt_percept(const mrt_msgs::Percept& p, const ConceptualModel& m);
-
-}  // namespace mrt::map::ros_conv
+}  // namespace mrt::map::node

@@ -26,8 +26,9 @@ struct PerceptFrame {
   DropCounts dropped;
 };
 
-/// Reads rows `frame,class,color,distance,bearing,reliability` (header
-/// required, exactly these columns). Rows of a frame need not be adjacent;
+/// Reads the stack's percept CSV (mrt_common/percept_csv.h: rows
+/// `frame,class,color,distance,bearing,reliability`, header required,
+/// exactly these columns; what recvision_run writes). Rows of a frame need not be adjacent;
 /// frames come out in order of first appearance. Throws
 /// mrt::common::ParseError (file:line:column) on a malformed row: wrong
 /// field count, empty frame, a field that is not a number. Percepts that

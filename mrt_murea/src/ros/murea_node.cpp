@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 
+#include "mrt_common_ros/percept_conversions.h"
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_world/occupancy_map.h"
@@ -213,6 +214,7 @@ class MureaNode {
     s.add("dropped: unknown frame", dropped_frame_);
     s.add("dropped: non-finite", drops_.non_finite);
     s.add("ignored: not a map class", drops_.non_map_class);
+    mrt::ros_common::report(s, drops_.ontology);
     s.add("frames without odometry", no_odom_);
     s.add("last update ms", last_ms_);
     if (!tracked_ms_.empty()) {  // over the last 1000 tracked frames

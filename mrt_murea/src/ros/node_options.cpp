@@ -1,9 +1,11 @@
 #include "node_options.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
 #include "mrt_common_ros/params.h"
+#include "mrt_common_ros/percept_conversions.h"
 
 namespace mrt::murea::node {
 
@@ -85,32 +87,24 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
 
 std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops) {
   std::vector<Percept> out;
-  for (const mrt_msgs::PerceptObject& obj : msg.objects) {
+  for (const mrt::common::PerceptObject& obj : mrt::ros_common::accepted_objects(msg, drops.ontology)) {
     const auto cls = parse_feature_class(obj.membership_class);
     if (!cls) {
       ++drops.non_map_class;
       continue;
     }
-    Percept p;
-    p.cls = *cls;
-    double distance = NAN, bearing = NAN;
-    double reliability = 1.0;
-    for (const mrt_msgs::Attribute& a : obj.attributes) {
-      if (a.name == "distance") {
-        distance = a.value;
-        if (a.reliability > 0.0) reliability = std::min(reliability, static_cast<double>(a.reliability));
-      } else if (a.name == "bearing") {
-        bearing = a.value;
-      } else if (a.name == "color") {
-        p.color = a.symbol;
-      }
-    }
-    if (!std::isfinite(distance) || !std::isfinite(bearing) || distance < 0.0 || !std::isfinite(reliability)) {
+    const auto pos = mrt::common::polar(obj);  // the ontology check made sure there is one
+    const double reliability = pos->reliability > 0.0 ? std::min(pos->reliability, 1.0) : 1.0;
+    if (!std::isfinite(pos->distance) || !std::isfinite(pos->bearing) || pos->distance < 0.0 ||
+        !std::isfinite(reliability)) {
       ++drops.non_finite;
       continue;
     }
-    p.distance = distance;
-    p.bearing = bearing;
+    Percept p;
+    p.cls = *cls;
+    p.color = obj.symbol("color");
+    p.distance = pos->distance;
+    p.bearing = pos->bearing;
     p.reliability = std::clamp(reliability, 1e-6, 1.0);
     out.push_back(std::move(p));
   }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/ontology.h"
 #include "mrt_murea/tracker.h"
 
 namespace mrt::murea::node {
@@ -39,11 +40,14 @@ NodeOptions read_options(const ros::NodeHandle& pnh);
 
 /// Counts of a percept message's objects that were not used.
 struct DropCounts {
+  mrt::common::PerceptDrops ontology;  // not an object of the ontology (unknown class, no position, ...)
   std::size_t non_map_class = 0;  // Ball, Robot, ...: not a map feature (ignored, not an error)
-  std::size_t non_finite = 0;     // nan/inf or missing distance/bearing, negative distance
+  std::size_t non_finite = 0;     // nan/inf in the position or the reliability, negative distance
 };
 
-/// The map percepts of a message, expressed in the frame of the message.
+/// The map percepts of a message (the objects the ontology accepts, read
+/// through mrt_common's position reader: polar or Cartesian), expressed in
+/// the frame of the message.
 std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops);
 
 /// Odometry covariance of a relative motion (amcl-like alphas).

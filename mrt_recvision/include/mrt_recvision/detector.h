@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common/percept.h"
 #include "mrt_recvision/calibration.h"
 #include "mrt_recvision/frame.h"
 #include "mrt_recvision/objects.h"
@@ -30,6 +31,11 @@ struct Detection {
   double reliability = 1.0;
   double vx = 0, vy = 0;          // floor point in the viewpoint frame (for drawing)
 };
+
+/// A detection as an object of the stack's percept type (mrt_common/
+/// percept.h): distance, bearing, x and y (base_link; x/y deviation
+/// hypot(sigma_distance, distance sigma_bearing)) and the colour's name.
+mrt::common::PerceptObject to_percept_object(const Detection& d);
 
 /// Counts of the last frame, for diagnostics and the benchmark.
 struct DetectorStats {

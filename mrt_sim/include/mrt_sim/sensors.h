@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "mrt_common/percept.h"
 #include "mrt_sim/mouse_model.h"  // MouseModel, mouse_displacement (kept here for old includes)
 #include "mrt_sim/world.h"
 
@@ -60,6 +61,12 @@ struct OtherRobot {
 };
 std::vector<SeenObject> vision_percepts(const World& w, const std::vector<OtherRobot>& others,
                                         const Pose2D& robot, const SensorsConfig& cfg);
+
+/// A seen object as an object of the stack's percept type (mrt_common/
+/// percept.h), with the vision model's deviations: distance and bearing
+/// (sigma cfg.vision_distance_noise * distance, cfg.vision_bearing_noise),
+/// x and y (sigma hypot of the two), the colour when it has one.
+mrt::common::PerceptObject to_percept_object(const SeenObject& s, const SensorsConfig& cfg);
 
 /// What a real vision system reports instead of the ideal percepts
 /// (world file `vision: {model: realistic}`), drawn from `rng`: class and

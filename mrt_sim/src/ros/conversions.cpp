@@ -4,20 +4,9 @@
 #include <cmath>
 
 #include "mrt_common/geodesy.h"
+#include "mrt_common_ros/percept_conversions.h"
 
 namespace mrt::sim::node {
-namespace {
-
-mrt_msgs::Attribute numeric(const std::string& name, double value, double variability) {
-  mrt_msgs::Attribute a;
-  a.name = name;
-  a.value = value;
-  a.variability = variability;
-  a.reliability = 1.0;
-  return a;
-}
-
-}  // namespace
 
 RobotFrames make_frames(const std::string& frame_prefix, const std::string& robot,
                         const std::string& sensor_parent_suffix) {
@@ -104,25 +93,7 @@ mrt_msgs::Percept to_percept(const std::vector<SeenObject>& seen, const SensorsC
   p.sensor = "omnivision";
   p.robot = robot;
   p.objects.reserve(seen.size());
-  for (const SeenObject& s : seen) {
-    mrt_msgs::PerceptObject o;
-    o.name = s.name;
-    o.membership_class = s.membership_class;
-    const double sd = cfg.vision_distance_noise * s.distance;
-    const double sb = cfg.vision_bearing_noise;
-    o.attributes.push_back(numeric("distance", s.distance, sd));
-    o.attributes.push_back(numeric("bearing", s.bearing, sb));
-    o.attributes.push_back(numeric("x", s.distance * std::cos(s.bearing), std::hypot(sd, s.distance * sb)));
-    o.attributes.push_back(numeric("y", s.distance * std::sin(s.bearing), std::hypot(sd, s.distance * sb)));
-    if (!s.color.empty()) {
-      mrt_msgs::Attribute c;
-      c.name = "color";
-      c.symbol = s.color;
-      c.reliability = 1.0;
-      o.attributes.push_back(c);
-    }
-    p.objects.push_back(std::move(o));
-  }
+  for (const SeenObject& s : seen) p.objects.push_back(mrt::ros_common::to_msg(to_percept_object(s, cfg)));
   return p;
 }
 

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "mrt_common_ros/params.h"
+#include "mrt_common_ros/percept_conversions.h"
 #include "mrt_map/team_sender.h"
 #include "mrt_map/world_model.h"
 #include "ros/conversions.h"
@@ -20,7 +21,7 @@
 namespace {
 
 using mrt::ros_common::ParamReader;
-namespace conv = mrt::map::ros_conv;
+namespace conv = mrt::map::node;
 
 struct NodeOptions {
   std::string model;
@@ -29,8 +30,6 @@ struct NodeOptions {
   double rate = 30.0;
   double team_rate = 10.0;
   std::string team_topic = "/team/world_models";
-  std::string dcdt_out_topic;  // legacy DCDT teammates, through the bridge
-  std::string dcdt_in_topic;
   double pose_sigma = 0.02;
   double theta_sigma = 0.01;
   mrt::map::WorldModelOptions core;
@@ -50,7 +49,7 @@ NodeOptions read_options(ros::NodeHandle& pnh) {
   p.get("world_frame", o.world_frame).get("base_frame", o.base_frame);
   ParamReader::check(!o.world_frame.empty(), "world_frame", "a non-empty frame id");
   p.get_positive("rate", o.rate).get_positive("team_rate", o.team_rate);
-  p.get("team_topic", o.team_topic).get("dcdt_out_topic", o.dcdt_out_topic).get("dcdt_in_topic", o.dcdt_in_topic);
+  p.get("team_topic", o.team_topic);
   p.get_positive("max_percept_age", o.core.max_percept_age);
   p.get_non_negative("pose_sigma", o.pose_sigma).get_non_negative("theta_sigma", o.theta_sigma);
   return o;
@@ -71,8 +70,6 @@ class MapNode {
       team_pub_ = nh.advertise<mrt_msgs::WorldModel>(opt_.team_topic, 10);
       team_sub_ = nh.subscribe(opt_.team_topic, 20, &MapNode::on_team, this);
     }
-    if (!opt_.dcdt_out_topic.empty()) dcdt_pub_ = nh.advertise<mrt_msgs::Percept>(opt_.dcdt_out_topic, 10);
-    if (!opt_.dcdt_in_topic.empty()) dcdt_sub_ = nh.subscribe(opt_.dcdt_in_topic, 20, &MapNode::on_dcdt, this);
     diagnostics_.setHardwareID(opt_.core.robot);
     diagnostics_.add("MAP world model", this, &MapNode::diagnose);
     cycle_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &MapNode::on_cycle, this);
@@ -106,11 +103,12 @@ class MapNode {
       return;
     }
     const auto before = world_.counters();
-    world_.add_percept(conv::from_msg(p), pose, stamp, now, p.sensor.empty() ? "sensor" : p.sensor);
+    world_.add_percept(mrt::ros_common::accepted_objects(p, ontology_drops_), pose, stamp, now,
+                       p.sensor.empty() ? "sensor" : p.sensor);
     const auto& after = world_.counters();
     if (after.accepted - before.accepted < p.objects.size())
-      ROS_WARN_THROTTLE(5.0, "map_node: dropped %zu of %zu objects of a percept from %s (unknown class, non-finite, "
-                        "stale, unmatched or outside the world; see diagnostics)",
+      ROS_WARN_THROTTLE(5.0, "map_node: dropped %zu of %zu objects of a percept from %s (not in the ontology, "
+                        "unknown class, non-finite, stale, unmatched or outside the world; see diagnostics)",
                         p.objects.size() - static_cast<std::size_t>(after.accepted - before.accepted),
                         p.objects.size(), p.sensor.c_str());
   }
@@ -143,12 +141,6 @@ class MapNode {
     ++team_models_;
   }
 
-  void on_dcdt(const mrt_msgs::Percept& p) {
-    if (p.robot == opt_.core.robot || p.robot.empty()) return;
-    world_.add_teammate_model(p.robot, conv::from_dcdt_percept(p, model_), p.header.stamp.toSec());
-    ++team_models_;
-  }
-
   void on_cycle(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     mrt::map::RobotPose pose;
@@ -159,11 +151,10 @@ class MapNode {
     if (marker_pub_.getNumSubscribers() > 0) marker_pub_.publish(conv::markers(world_, opt_.world_frame, now));
     // The team exchange: on the heartbeat (team_rate) or on a deviation
     // (the model's team.send_threshold).
-    if (team_pub_ || dcdt_pub_) {
+    if (team_pub_) {
       const std::vector<mrt::map::RemoteTrack> tracks = world_.local_tracks();
       if (sender_.due(now.toSec(), tracks)) {
-        if (team_pub_) team_pub_.publish(conv::to_msg(world_, tracks, opt_.world_frame, now));
-        if (dcdt_pub_) dcdt_pub_.publish(conv::to_dcdt_percept(world_, tracks, opt_.world_frame, now));
+        team_pub_.publish(conv::to_msg(world_, tracks, opt_.world_frame, now));
         sender_.sent(now.toSec(), tracks);
       }
     }
@@ -174,13 +165,14 @@ class MapNode {
     const auto& c = world_.counters();
     const std::uint64_t dropped =
         c.unknown_class + c.non_finite + c.no_position + c.unmatched + c.stale + c.stale_team + c.outside_world + no_pose_ +
-        bad_anchors_;
+        bad_anchors_ + ontology_drops_.total();
     s.summary(dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK,
               dropped > 0 ? "input dropped (see counters)" : "ok");
     s.add("anchors", world_.tracker().anchors().size());
     s.add("anchors dropped", world_.tracker().dropped_count());
     s.add("percepts", percepts_);
     s.add("objects accepted", c.accepted);
+    mrt::ros_common::report(s, ontology_drops_);
     s.add("dropped unknown class", c.unknown_class);
     s.add("dropped non-finite", c.non_finite);
     s.add("dropped no position", c.no_position);
@@ -202,11 +194,12 @@ class MapNode {
   mrt::map::TeamSender sender_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
-  ros::Subscriber percept_sub_, coordination_sub_, team_sub_, dcdt_sub_;
-  ros::Publisher model_pub_, crisp_pub_, marker_pub_, team_pub_, dcdt_pub_;
+  ros::Subscriber percept_sub_, coordination_sub_, team_sub_;
+  ros::Publisher model_pub_, crisp_pub_, marker_pub_, team_pub_;
   ros::Timer cycle_timer_;
   diagnostic_updater::Updater diagnostics_;
   std::uint64_t percepts_ = 0, no_pose_ = 0, bad_anchors_ = 0, bad_parameters_ = 0, team_models_ = 0;
+  mrt::common::PerceptDrops ontology_drops_;  // objects the ontology refuses (percept_conversions.h)
 };
 
 }  // namespace

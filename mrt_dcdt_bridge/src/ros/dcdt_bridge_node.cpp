@@ -138,12 +138,12 @@ class BridgeNode {
     auto& pub = pubs_.at(m.type);
     try {
       switch (m.kind) {
-        case PayloadKind::PERCEPT: pub.publish(ros_conv::to_percept(*xml)); break;
-        case PayloadKind::CRISP_DATA: pub.publish(ros_conv::to_crisp_data(*xml)); break;
-        case PayloadKind::COMMANDS: pub.publish(ros_conv::to_commands(*xml)); break;
-        case PayloadKind::WORLD_MODEL: pub.publish(ros_conv::to_world_model(*xml)); break;
-        case PayloadKind::COORDINATION: pub.publish(ros_conv::to_coordination(*xml)); break;
-        case PayloadKind::REFEREE: pub.publish(ros_conv::to_referee(*xml)); break;
+        case PayloadKind::PERCEPT: pub.publish(node::to_percept(*xml)); break;
+        case PayloadKind::CRISP_DATA: pub.publish(node::to_crisp_data(*xml)); break;
+        case PayloadKind::COMMANDS: pub.publish(node::to_commands(*xml)); break;
+        case PayloadKind::WORLD_MODEL: pub.publish(node::to_world_model(*xml)); break;
+        case PayloadKind::COORDINATION: pub.publish(node::to_coordination(*xml)); break;
+        case PayloadKind::REFEREE: pub.publish(node::to_referee(*xml)); break;
         case PayloadKind::RAW: {
           std_msgs::String s;
           s.data = msg.payload_string();
@@ -182,22 +182,22 @@ class BridgeNode {
   void subscribe(ros::NodeHandle& nh, const TopicMapping& m, int q) {
     switch (m.kind) {
       case PayloadKind::PERCEPT:
-        subscribe_kind<mrt_msgs::Percept>(nh, m, q, ros_conv::from_percept);
+        subscribe_kind<mrt_msgs::Percept>(nh, m, q, node::from_percept);
         break;
       case PayloadKind::CRISP_DATA:
-        subscribe_kind<mrt_msgs::CrispDataArray>(nh, m, q, ros_conv::from_crisp_data);
+        subscribe_kind<mrt_msgs::CrispDataArray>(nh, m, q, node::from_crisp_data);
         break;
       case PayloadKind::COMMANDS:
-        subscribe_kind<mrt_msgs::CommandArray>(nh, m, q, ros_conv::from_commands);
+        subscribe_kind<mrt_msgs::CommandArray>(nh, m, q, node::from_commands);
         break;
       case PayloadKind::WORLD_MODEL:
-        subscribe_kind<mrt_msgs::WorldModel>(nh, m, q, ros_conv::from_world_model);
+        subscribe_kind<mrt_msgs::WorldModel>(nh, m, q, node::from_world_model);
         break;
       case PayloadKind::COORDINATION:
-        subscribe_kind<mrt_msgs::CoordinationParameters>(nh, m, q, ros_conv::from_coordination);
+        subscribe_kind<mrt_msgs::CoordinationParameters>(nh, m, q, node::from_coordination);
         break;
       case PayloadKind::REFEREE:
-        subscribe_kind<mrt_msgs::RefereeCommand>(nh, m, q, ros_conv::from_referee);
+        subscribe_kind<mrt_msgs::RefereeCommand>(nh, m, q, node::from_referee);
         break;
       case PayloadKind::RAW: {
         const boost::function<void(const ros::MessageEvent<std_msgs::String const>&)> cb =

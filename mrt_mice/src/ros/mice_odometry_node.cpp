@@ -22,7 +22,7 @@
 #include "mrt_mice/mice_io.h"
 #include "mrt_mice/mice_odometry.h"
 
-namespace mrt::mice {
+namespace mrt::mice::node {
 namespace {
 
 using mrt::ros_common::ParamReader;
@@ -217,13 +217,13 @@ class MiceOdometryNode {
 };
 
 }  // namespace
-}  // namespace mrt::mice
+}  // namespace mrt::mice::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "mice_odometry");
   return mrt::ros_common::run_node([] {
     ros::NodeHandle nh, pnh("~");
-    mrt::mice::MiceOdometryNode node(nh, pnh);
+    mrt::mice::node::MiceOdometryNode node(nh, pnh);
     ros::spin();
     return 0;
   });

@@ -17,7 +17,7 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_common_ros/params.h"
 
-namespace mrt::brian {
+namespace mrt::brian::node {
 
 namespace {
 
@@ -326,12 +326,12 @@ class BrianNode {
   std::string last_reload_error_;
 };
 
-}  // namespace mrt::brian
+}  // namespace mrt::brian::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "brian");
   return mrt::ros_common::run_node([] {
-    mrt::brian::BrianNode node{ros::NodeHandle(), ros::NodeHandle("~")};
+    mrt::brian::node::BrianNode node{ros::NodeHandle(), ros::NodeHandle("~")};
     ros::spin();
     return 0;
   });

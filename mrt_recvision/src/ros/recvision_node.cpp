@@ -1,7 +1,7 @@
 // recvision_node: camera images in, percepts and a debug image out.
 // Thin ROS layer over the core (mrt_recvision/detector.h): parameters are
 // read once into the calibration, each sensor_msgs/Image becomes a Frame,
-// each Detection a PerceptObject with the attributes of mrt_sim's percepts.
+// each Detection a percept object of the ontology (to_percept_object).
 // The viewpoint's mount is taken from tf (base_frame <- the image's
 // frame_id), falling back to the calibration file's `mount:`.
 // With ~device set, the driver sub-module reads a V4L2 camera (or a video
@@ -22,20 +22,12 @@
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
+#include "mrt_common_ros/percept_conversions.h"
 #include "mrt_recvision/detector.h"
 #include "mrt_recvision/frame.h"
 
-namespace mrt::recvision {
+namespace mrt::recvision::node {
 namespace {
-
-mrt_msgs::Attribute numeric(const std::string& name, double value, double variability, double reliability) {
-  mrt_msgs::Attribute a;
-  a.name = name;
-  a.value = value;
-  a.variability = variability;
-  a.reliability = reliability;
-  return a;
-}
 
 mrt_msgs::Percept to_percept(const std::vector<Detection>& dets, const std_msgs::Header& image_header,
                              const std::string& frame, const std::string& robot) {
@@ -44,21 +36,7 @@ mrt_msgs::Percept to_percept(const std::vector<Detection>& dets, const std_msgs:
   p.header.frame_id = frame;
   p.sensor = "omnivision";
   p.robot = robot;
-  for (const Detection& d : dets) {
-    mrt_msgs::PerceptObject o;
-    o.membership_class = d.membership_class;
-    const double sxy = std::hypot(d.sigma_distance, d.distance * d.sigma_bearing);
-    o.attributes.push_back(numeric("distance", d.distance, d.sigma_distance, d.reliability));
-    o.attributes.push_back(numeric("bearing", d.bearing, d.sigma_bearing, d.reliability));
-    o.attributes.push_back(numeric("x", d.x, sxy, d.reliability));
-    o.attributes.push_back(numeric("y", d.y, sxy, d.reliability));
-    mrt_msgs::Attribute c;
-    c.name = "color";
-    c.symbol = color_name(d.color);
-    c.reliability = d.reliability;
-    o.attributes.push_back(c);
-    p.objects.push_back(std::move(o));
-  }
+  for (const Detection& d : dets) p.objects.push_back(mrt::ros_common::to_msg(to_percept_object(d)));
   return p;
 }
 
@@ -275,12 +253,12 @@ class RecVisionNode {
 };
 
 }  // namespace
-}  // namespace mrt::recvision
+}  // namespace mrt::recvision::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "recvision_node");
   return mrt::ros_common::run_node([] {
-    mrt::recvision::RecVisionNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+    mrt::recvision::node::RecVisionNode node(ros::NodeHandle(), ros::NodeHandle("~"));
     ros::spin();
     return 0;
   });

@@ -18,7 +18,7 @@
 #include "mrt_common_ros/params.h"
 #include "mrt_mice/evdev_reader.h"
 
-namespace mrt::mice {
+namespace mrt::mice::node {
 namespace {
 
 using mrt::ros_common::ParamReader;
@@ -154,13 +154,13 @@ class MiceEvdevNode {
 };
 
 }  // namespace
-}  // namespace mrt::mice
+}  // namespace mrt::mice::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "mice_evdev");
   return mrt::ros_common::run_node([] {
     ros::NodeHandle nh, pnh("~");
-    mrt::mice::MiceEvdevNode node(nh, pnh);
+    mrt::mice::node::MiceEvdevNode node(nh, pnh);
     ros::spin();
     return 0;
   });
