@@ -27,20 +27,10 @@ ensure_setup() {
 # programs, compiled in less CPU time (-g cost 25-47 % more per file) and
 # linked from objects 15-25 times smaller (measured for issue 19).
 # BUILD_TYPE=RelWithDebInfo (-O2 -g) or Debug for a debugger.
-# UNITY=ON makes it a CMake unity build, as the sanitizer builds
-# (scripts/san_unity.cmake: a target's sources compiled in batches, so the
-# ROS, Eigen and OpenCV headers are parsed once per batch, not once per
-# file; g++ took 40-57 % less CPU time on the three libraries measured for
-# issue 19); the targets whose sources cannot share a translation unit are
-# listed in scripts/san_no_unity.txt (a new one fails the build with a
-# redefinition: add it there). Off by default until a whole test run has
-# passed with it.
 build_workspace() {
   cd "$ROOT"
   catkin_make "${CATKIN_ARGS[@]}" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" \
-    -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" \
-    -DCMAKE_UNITY_BUILD="${UNITY:-OFF}" -DCMAKE_PROJECT_INCLUDE="$ROOT/scripts/san_unity.cmake" \
-    -DMRT_SAN_NO_UNITY_FILES="$ROOT/scripts/san_no_unity.txt" -j"$JOBS" "$@"
+    -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -j"$JOBS" "$@"
 }
 
 # Picks a free TCP port for a private ROS master, so runs never collide.

@@ -1,6 +1,6 @@
-# Included after every project() of the normal build (scripts/common.sh,
-# build_workspace) and of the sanitizer builds (scripts/sanitize.sh), as
-# -DCMAKE_PROJECT_INCLUDE=... . They are CMake unity builds
+# Included after every project() of the sanitizer builds
+# (scripts/sanitize.sh), as -DCMAKE_PROJECT_INCLUDE=... . They are CMake
+# unity builds
 # (CMAKE_UNITY_BUILD: a target's sources compiled in batches, each header
 # parsed once per batch). A target with a single source is compiled as it
 # is (nothing to share). A target whose sources cannot share a translation

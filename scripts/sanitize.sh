@@ -4,8 +4,8 @@
 # build/test_results beside the others, so count_results.py counts them in
 # the final "N passed, M failed":
 #  * build_san/ (devel space devel_san/): the workspace configured with
-#    clang++, -O0 (SAN_OPT; at -O1 clang took 1.6-2.8 times the CPU time
-#    on the sources measured for issue 19) -gline-tables-only and
+#    clang++, -O0 (at -O1 clang took 1.6-2.8 times the CPU time on the
+#    sources measured for issue 19) -gline-tables-only and
 #    -fsanitize=address,undefined
 #    -fno-sanitize-recover=all (any ASan or UBSan report ends the program
 #    with an error; LeakSanitizer on), as a CMake unity build (the sources
@@ -56,7 +56,7 @@ san_configure() {
   mkdir -p "$build"
   touch "$build/.fresh"
   cmake -S "$ROOT/src" -B "$build" "${CATKIN_ARGS[@]}" \
-    -DCMAKE_C_COMPILER="${CLANG:-clang}" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" \
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCATKIN_DEVEL_PREFIX="$devel" -DCMAKE_INSTALL_PREFIX="$build/install" \
     -DCMAKE_BUILD_TYPE=Sanitize \
     -DCMAKE_C_FLAGS_SANITIZE="$opt -gline-tables-only -fno-omit-frame-pointer $flags" \
@@ -180,7 +180,7 @@ step_done() {  # step_done NAME
 # ASan + UBSan: the gtests and the fuzz targets, one build.
 build_asan() {
   local targets fuzz
-  san_configure "$ROOT/build_san" "$ROOT/devel_san" "${SAN_OPT:--O0}" "-fsanitize=address,undefined -fno-sanitize-recover=all"
+  san_configure "$ROOT/build_san" "$ROOT/devel_san" -O0 "-fsanitize=address,undefined -fno-sanitize-recover=all"
   mapfile -t targets < <(gtest_targets "$ROOT/build_san" _gtest_)
   mapfile -t fuzz < <(sed -n 's/^\([a-z_]*fuzz_[a-z_]*\) .*/\1/p' "$ROOT/scripts/fuzz_targets.txt")
   echo "== sanitizers: building ${#targets[@]} gtests and ${#fuzz[@]} fuzz targets with ASan+UBSan (build_san)"

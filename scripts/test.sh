@@ -1,12 +1,34 @@
 #!/usr/bin/env bash
 # README command 2: installs what is missing, builds, builds the tests, runs
-# every gtest and rostest through ctest, checks the workspace with
-# catkin_lint --strict and the sources' sizes (scripts/check_sizes.py), runs
-# the gtests again under ASan+UBSan (and mrt_dcdt's under TSan) and every
-# libFuzzer target for a bounded time (scripts/sanitize.sh; only with
-# SANITIZE=0 skips it; FUZZ_SECONDS sets the time per target, 5 by default), prints the wall
-# and CPU time of each phase, and prints, as its last line,
-# "N passed, M failed" counted over test cases.
+# every gtest and rostest through ctest, runs the workspace checks, runs the
+# sanitizer and fuzzing stage, and prints as its last line
+# "N passed, M failed" counted over test cases. Top to bottom:
+#   1. setup       scripts/setup.sh when a Debian package is missing
+#   2. stage       scripts/sanitize.sh starts in the background (lowest priority)
+#   3. build       the workspace (Release: -O2, no debug information)
+#   4. build tests the gtest and rostest targets
+#   5. tests       ctest, one test at a time, on a private ROS master port
+#   6. checks      catkin_lint --strict, check_sizes.py, check_install.sh
+#   7. stage       waits for the sanitizer stage, counts its cases
+#   8. count       scripts/count_results.py: the last line
+#
+# Knobs (environment variables; every one has a default, none is needed):
+#   SANITIZE=1       0 skips the sanitizer and fuzzing stage (about 5 of the
+#                    ~25 minutes on a fresh clone of this 2-core machine)
+#   FUZZ_SECONDS=5   run time of each libFuzzer target in the stage
+#   JOBS=$(nproc)    parallel compile jobs
+#   BUILD_TYPE=Release  the normal build (RelWithDebInfo keeps -g, for a debugger)
+#   SAN_NICE=19      priority of the background stage; 0 gives it a fair
+#                    share (on a machine loaded by other work)
+#   SAN_UNITY=ON     the sanitizer builds are CMake unity builds (OFF: file by file)
+#   ROS_HOME         where ROS writes its logs (default build/ros_home)
+# scripts/sanitize.sh run by hand also takes SAN_GTESTS (a ctest regex of
+# the ASan gtests to run) and SAN_SKIP (the gtests it leaves out).
+#
+# One measured tuning stays in the default path: the stage runs in its own
+# session and scheduling group at nice 19 (sched_autogroup gives each
+# session a group; nice alone left the stage half the CPU and the build
+# phase took 701 s instead of 364 s on a fresh clone, issue 19).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 # Phase timing: wall time and the CPU time (user + system) of the child
@@ -35,23 +57,11 @@ export SANITIZE="${SANITIZE:-1}"  # on: the whole run took 26 min 36 s on a fres
 rm -rf "$ROOT/build/test_results"
 phase_done setup
 
-# The sanitizer and fuzzing stage (scripts/sanitize.sh: build_san,
-# build_tsan, then their gtests and the fuzzers) starts now in the
-# background at the lowest priority (nice 19), so it uses only the CPU time
-# the main build and the tests leave idle (the tests run one at a time: the
-# second core is mostly idle during them) and does not disturb the tests'
-# timing (SAN_NICE=0 gives it a fair share instead, e.g. on a machine
-# loaded by other work, where nice 19 would starve it). Its results go to
-# build/test_results beside the others. Its own process group, ended with
-# this script. Its own session too, and so, where the kernel groups the
-# processes of a session for scheduling (sched_autogroup_enabled, as on
-# this machine), its own scheduling group: nice alone then ranks it only
-# against its own processes and the group gets half of the CPU beside the
-# main build's group (likely why the build phase took 701 s instead of
-# 364 s in the fresh-clone run with the stage; two busy loops measured for
-# issue 19: `setsid nice -n 19` got 5 times the CPU of a nice 0 one in this
-# session, with its group at 19 too a twelfth), so the group's own nice
-# (/proc/self/autogroup) is set to the same value.
+# 2. The sanitizer and fuzzing stage (scripts/sanitize.sh) in the
+# background at the lowest priority: it uses only the CPU the build and the
+# tests leave idle (the tests run one at a time). Its own process group and
+# session (so its own scheduling group, whose nice is set too: see the
+# header), ended with this script; its results go to build/test_results.
 san_pid=
 if [ "$SANITIZE" != 0 ]; then
   # shellcheck disable=SC2016  # expanded by the inner bash
@@ -63,18 +73,17 @@ else
   trap 'rm -f "$T_FILE"' EXIT
 fi
 
-# The libFuzzer programs come from build_san: the main build skips its own
-# clang++ sub-builds of mrt_brian's and mrt_dcdt's (the same programs).
-build_workspace -DMRT_BRIAN_FUZZ=OFF -DMRT_DCDT_FUZZ=OFF
+# 3. The workspace (the libFuzzer programs are the stage's: clang only).
+build_workspace
 phase_done build
-# --force-cmake: catkin caches the test environment (PYTHONPATH,
+# 4. The test targets. --force-cmake: catkin caches the test environment (PYTHONPATH,
 # LD_LIBRARY_PATH) when it configures, and keeps only devel directories
 # that exist then; on a fresh clone devel/lib/python3/dist-packages (the
 # generated mrt_msgs Python) exists only after the first build.
 build_workspace --force-cmake tests
 phase_done "build tests"
 
-# Each run gets its own ROS master port.
+# 5. Every gtest and rostest; each run gets its own ROS master port.
 export ROS_MASTER_URI="http://127.0.0.1:$(free_port)"
 cd "$ROOT/build"
 set +e
@@ -83,7 +92,7 @@ ctest_rc=$?
 set -e
 phase_done "gtests + rostests"
 
-# Workspace-level checks, each counted as one more test case: runs the
+# 6. Workspace-level checks, each counted as one more test case: runs the
 # command, writes its JUnit file, and shows its output when it fails.
 check_case() {  # check_case NAME COMMAND...
   local name=$1 out rc
@@ -107,14 +116,15 @@ PY
 }
 
 # catkin_lint clean (errors and warnings); no source file over 500 lines and
-# no function over 80; the Roby bringup runs from `catkin_make install`.
+# no function over 80 unless scripts/size_exceptions.txt says why; the Roby
+# bringup runs from `catkin_make install`.
 check_case catkin_lint catkin_lint --strict src
 check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d mrt_*/)
 check_case check_install "$ROOT/scripts/check_install.sh"
 
 phase_done "checks"
 
-# Sanitizers and fuzzing: waits for the background stage (results counted
+# 7. Sanitizers and fuzzing: waits for the background stage (results counted
 # below; the stage failing on its own, e.g. clang missing, is one failed
 # case).
 if [ -n "$san_pid" ]; then
@@ -134,7 +144,7 @@ echo "== time per phase (CPU: of the processes the phase waited for; the sanitiz
 echo "   in the phase that waits for it; its steps are in its log above)"
 printf '   %s\n' "${TIMES[@]}"
 
-# A ctest failure the result files do not show (a test that crashed before
+# 8. A ctest failure the result files do not show (a test that crashed before
 # writing any) counts as one more failed case.
 extra=0
 if [ "$ctest_rc" -ne 0 ]; then extra=1; fi
