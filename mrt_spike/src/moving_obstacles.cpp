@@ -64,11 +64,12 @@ DynamicSpike::DynamicSpike(const OccupancyGrid& static_grid, double inflation, d
       static_(std::make_unique<SpikePlanner>(static_grid_, options)),
       search_(std::make_unique<JumpPointSearch>(layer_.grid())) {}
 
-bool DynamicSpike::still_valid(const std::vector<Cell>& path) const {
+bool DynamicPlanner::still_valid(const std::vector<Cell>& path) const {
+  const OccupancyGrid& g = obstacles().grid();
   if (path.empty()) return false;
-  if (path.size() == 1) return layer_.grid().free(path[0]);
+  if (path.size() == 1) return g.free(path[0]);
   for (size_t k = 1; k < path.size(); ++k)
-    if (!line_of_sight(layer_.grid(), path[k - 1], path[k])) return false;
+    if (!line_of_sight(g, path[k - 1], path[k])) return false;
   return true;
 }
 

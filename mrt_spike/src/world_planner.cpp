@@ -1,17 +1,26 @@
 #include "mrt_spike/world_planner.h"
 
+#include "mrt_spike/planner_factory.h"
+
 namespace mrt::spike {
 
 WorldPlanner::WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options)
     : map_(map), options_(options) {
   const double inflation = (options.robot_radius + options.safety_distance) / map.frame.resolution;
-  spike_ = std::make_unique<DynamicSpike>(inflate(map.grid, inflation), inflation, options.horizon, options.spike);
+  PlannerOptions po;
+  po.spike = options.spike;
+  planner_ = make_dynamic_planner(options.planner, inflate(map.grid, inflation), inflation, options.horizon, po);
+}
+
+const Quadtree* WorldPlanner::quadtree() const {
+  const auto* spike = dynamic_cast<const DynamicSpike*>(planner_.get());
+  return spike ? &spike->static_planner().quadtree() : nullptr;
 }
 
 WorldPlan WorldPlanner::plan(double x0, double y0, double x1, double y1) {
   WorldPlan out;
   const Cell s = map_.cell_at(x0, y0), g = map_.cell_at(x1, y1);
-  const PlanResult r = spike_->plan(s, g);
+  const PlanResult r = planner_->plan(s, g);
   const GridFrame& f = map_.frame;
   if (!r.solved) {
     out.reason = r.reason;
@@ -29,12 +38,12 @@ WorldPlan WorldPlanner::plan(double x0, double y0, double x1, double y1) {
 
 void WorldPlanner::set_obstacle(int id, double x, double y, double r, double vx, double vy) {
   const GridFrame& f = map_.frame;
-  spike_->obstacles().set(id, {(x - f.origin_x) / f.resolution, (y - f.origin_y) / f.resolution, r / f.resolution,
+  planner_->obstacles().set(id, {(x - f.origin_x) / f.resolution, (y - f.origin_y) / f.resolution, r / f.resolution,
                                vx / f.resolution, vy / f.resolution});
 }
 
-void WorldPlanner::remove_obstacle(int id) { spike_->obstacles().remove(id); }
+void WorldPlanner::remove_obstacle(int id) { planner_->obstacles().remove(id); }
 
-bool WorldPlanner::still_valid(const WorldPlan& p) const { return p.solved && spike_->still_valid(p.waypoints); }
+bool WorldPlanner::still_valid(const WorldPlan& p) const { return p.solved && planner_->still_valid(p.waypoints); }
 
 }  // namespace mrt::spike

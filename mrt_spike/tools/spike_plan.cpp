@@ -1,4 +1,5 @@
-// spike_plan: SPIKE (or the octile A* baseline, or OMPL) on a Moving AI map.
+// spike_plan: SPIKE (or the octile A* baseline, jump point search, or OMPL)
+// on a Moving AI map; the algorithm by name (planner_factory.h).
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -9,8 +10,7 @@
 #include "mrt_common/cli.h"
 #include "mrt_spike/line_of_sight.h"
 #include "mrt_spike/movingai.h"
-#include "mrt_spike/ompl_planner.h"
-#include "mrt_spike/planner.h"
+#include "mrt_spike/planner_factory.h"
 #include "mrt_spike/scenario_run.h"
 
 using namespace mrt::spike;
@@ -35,7 +35,7 @@ void add_options(CLI::App& app, Args& a) {
   auto* o_goal = app.add_option("--goal", a.goal, "goal X Y")->expected(2);
   auto* o_scen = app.add_option("--scen", a.scen_file, ".scen file");
   app.add_option("--queries", a.idx_file, "file of query indices, one a line")->needs(o_scen);
-  app.add_option("--algo", a.algo, "spike | astar | ompl")->check(CLI::IsMember({"spike", "astar", "ompl"}));
+  app.add_option("--algo", a.algo, "spike | astar | jps | ompl")->check(CLI::IsMember(planner_names()));
   app.add_option("--ompl-planner", a.ompl_planner, "OMPL planner for --algo ompl")
       ->check(CLI::IsMember({"rrtstar", "prmstar"}));
   app.add_option("--ompl-time", a.ompl_time, "OMPL time limit per query, s")->check(CLI::PositiveNumber);
@@ -63,23 +63,17 @@ int run(const Args& a) {
   }
   std::ostream& out = a.out_file.empty() ? std::cout : file;
   const auto t0 = std::chrono::steady_clock::now();
-  SpikeOptions opts;
-  opts.quadtree.max_leaf_size = a.max_leaf;
-  opts.refine = a.refine;
-  opts.quadtree.centre_only = a.vertices == "centre";
-  opts.graph = a.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
-  opts.landmarks = a.landmarks;
-  std::unique_ptr<SpikePlanner> spike;
-  std::unique_ptr<GridAstar> astar;
-  std::unique_ptr<OmplPlanner> ompl;
-  if (a.algo == "spike") spike = std::make_unique<SpikePlanner>(grid, opts);
-  else if (a.algo == "ompl") ompl = std::make_unique<OmplPlanner>(grid, OmplOptions{a.ompl_planner, a.ompl_time, 1});
-  else astar = std::make_unique<GridAstar>(grid);
+  PlannerOptions opts;
+  opts.spike.quadtree.max_leaf_size = a.max_leaf;
+  opts.spike.refine = a.refine;
+  opts.spike.quadtree.centre_only = a.vertices == "centre";
+  opts.spike.graph = a.graph == "subgoal" ? SpikeOptions::Graph::subgoal : SpikeOptions::Graph::quadtree;
+  opts.spike.landmarks = a.landmarks;
+  opts.ompl = OmplOptions{a.ompl_planner, a.ompl_time, 1};
+  const std::unique_ptr<GridPlanner> planner = make_planner(a.algo, grid, opts);
   const double pre_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::cerr << "preprocessing_ms: " << pre_ms << " ms\n";
-  PlanFn plan = [&](const Cell& s, const Cell& g) {
-    return spike ? spike->plan(s, g) : ompl ? ompl->plan(s, g) : astar->plan(s, g);
-  };
+  PlanFn plan = [&](const Cell& s, const Cell& g) { return planner->plan(s, g); };
   if (!a.scen_file.empty()) {
     const auto scen = load_scenario(a.scen_file);
     const std::vector<int> idx = a.idx_file.empty() ? std::vector<int>{} : load_indices(a.idx_file);

@@ -4,6 +4,7 @@
 // static plan).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "mrt_spike/grid.h"
@@ -11,13 +12,16 @@
 
 namespace mrt::spike {
 
-class JumpPointSearch {
+class JumpPointSearch final : public GridPlanner {
  public:
   /// Reads `grid` at every query (it may change between queries).
   explicit JumpPointSearch(const OccupancyGrid& grid);
   /// Same contract as GridAstar::plan: octile-optimal length; the path's
   /// waypoints are the jump points (each segment a straight or diagonal run).
-  PlanResult plan(const Cell& start, const Cell& goal);
+  PlanResult plan(const Cell& start, const Cell& goal) override;
+  std::string name() const override { return "jps"; }
+  PlannerCapabilities capabilities() const override { return kCapabilities; }
+  static constexpr PlannerCapabilities kCapabilities{true, true};
 
  private:
   bool move_ok(int x, int y, int dx, int dy) const;

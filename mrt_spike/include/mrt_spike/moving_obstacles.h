@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "mrt_spike/grid.h"
@@ -52,20 +53,32 @@ class ObstacleLayer {
   std::map<int, std::vector<Cell>> footprints_;
 };
 
+/// A planner among moving obstacles: the obstacle layer over the static
+/// grid and an algorithm planning on the layer's grid (make_dynamic_planner
+/// in planner_factory.h makes one by name).
+class DynamicPlanner : public GridPlanner {
+ public:
+  virtual ObstacleLayer& obstacles() = 0;
+  virtual const ObstacleLayer& obstacles() const = 0;
+  /// True while every segment of the path is valid with the current footprints.
+  bool still_valid(const std::vector<Cell>& path) const;
+};
+
 /// SPIKE with moving obstacles: the static SpikePlanner (quadtree, subgoal
 /// graph) is built once; a query first plans on the static structure and
 /// keeps that path when no footprint blocks it; otherwise it searches the
 /// grid with the footprints (jump point search: octile-optimal, nothing to
 /// rebuild) and pulls the string on it.
-class DynamicSpike {
+class DynamicSpike final : public DynamicPlanner {
  public:
   DynamicSpike(const OccupancyGrid& static_grid, double inflation, double horizon, SpikeOptions options = {});
-  ObstacleLayer& obstacles() { return layer_; }
-  const ObstacleLayer& obstacles() const { return layer_; }
+  ObstacleLayer& obstacles() override { return layer_; }
+  const ObstacleLayer& obstacles() const override { return layer_; }
   const SpikePlanner& static_planner() const { return *static_; }
-  PlanResult plan(const Cell& start, const Cell& goal);
-  /// True while every segment of the path is valid with the current footprints.
-  bool still_valid(const std::vector<Cell>& path) const;
+  PlanResult plan(const Cell& start, const Cell& goal) override;
+  std::string name() const override { return "spike"; }
+  PlannerCapabilities capabilities() const override { return kCapabilities; }
+  static constexpr PlannerCapabilities kCapabilities{true, true};
 
  private:
   OccupancyGrid static_grid_;

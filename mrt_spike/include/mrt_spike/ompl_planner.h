@@ -20,12 +20,16 @@ struct OmplOptions {
 /// checked every half cell along motions, then simplifies the path. The
 /// waypoints are rounded to cells (the first the start, the last the goal);
 /// `solved` only for an exact solution. Validity by the rule is
-/// checked by the caller (the bench reports it).
-class OmplPlanner {
+/// checked by the caller (the bench reports it): its paths are not valid by
+/// construction. It reads the grid at every query.
+class OmplPlanner final : public GridPlanner {
  public:
   OmplPlanner(const OccupancyGrid& grid, OmplOptions options = {});
-  ~OmplPlanner();
-  PlanResult plan(const Cell& start, const Cell& goal);
+  ~OmplPlanner() override;
+  PlanResult plan(const Cell& start, const Cell& goal) override;
+  std::string name() const override { return "ompl"; }
+  PlannerCapabilities capabilities() const override { return kCapabilities; }
+  static constexpr PlannerCapabilities kCapabilities{true, false};
 
  private:
   struct Impl;

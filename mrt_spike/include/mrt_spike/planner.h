@@ -1,5 +1,5 @@
 // Planners over an occupancy grid: SPIKE (any-angle search over the
-// quadtree) and the baseline octile A*.
+// quadtree) and the baseline octile A*, both GridPlanners (grid_planner.h).
 #pragma once
 
 #include <memory>
@@ -7,21 +7,11 @@
 #include <vector>
 
 #include "mrt_spike/grid.h"
+#include "mrt_spike/grid_planner.h"
 #include "mrt_spike/quadtree.h"
 #include "mrt_spike/subgoal_graph.h"
 
 namespace mrt::spike {
-
-struct PlanResult {
-  bool solved = false;
-  std::vector<Cell> path;  ///< waypoints (cell centres), start first, goal last
-  double length = 0.0;
-  std::string reason;      ///< why not solved (DynamicSpike: "static" when the static plan was kept)
-  Cell nearest;            ///< when not solved: the reachable cell nearest the goal
-                           ///< (or nearest the start when the start is blocked)
-  int expansions = 0;
-  bool fallback = false;   ///< SPIKE only: solved by the grid search after the quadtree failed
-};
 
 /// Why there is no path, and the nearest reachable point, in O(cells):
 /// a blocked start gives the free cell nearest it; a blocked goal or an
@@ -31,11 +21,15 @@ PlanResult diagnose(const OccupancyGrid& grid, const Cell& start, const Cell& go
 
 /// Plain octile A* on the grid: 8-connected, cost 1 and sqrt(2), no corner
 /// cutting (a diagonal move needs both adjacent straight cells free), binary
-/// heap, octile heuristic. The baseline.
-class GridAstar {
+/// heap, octile heuristic. The baseline. Reads the grid at every query (its
+/// size fixed): it follows the grid's changes.
+class GridAstar final : public GridPlanner {
  public:
   explicit GridAstar(const OccupancyGrid& grid);
-  PlanResult plan(const Cell& start, const Cell& goal);
+  PlanResult plan(const Cell& start, const Cell& goal) override;
+  std::string name() const override { return "astar"; }
+  PlannerCapabilities capabilities() const override { return kCapabilities; }
+  static constexpr PlannerCapabilities kCapabilities{true, true};
   /// The same search restricted to the cells c with mask[index(c)] == stamp.
   PlanResult plan_within(const Cell& start, const Cell& goal, const std::vector<unsigned>& mask,
                          unsigned stamp);
@@ -66,11 +60,15 @@ struct SpikeOptions {
 /// SPIKE: Lazy Theta* over the quadtree leaves (vertices: the leaves'
 /// representative cells; parents may be any earlier vertex in line of sight
 /// on the fine grid), then string pulling. The quadtree is built once
-/// (preprocessing); queries reuse it.
-class SpikePlanner {
+/// (preprocessing); queries reuse it, so later changes of the grid are not
+/// seen (DynamicSpike adds moving obstacles).
+class SpikePlanner final : public GridPlanner {
  public:
   SpikePlanner(const OccupancyGrid& grid, SpikeOptions options = {});
-  PlanResult plan(const Cell& start, const Cell& goal);
+  PlanResult plan(const Cell& start, const Cell& goal) override;
+  std::string name() const override { return "spike"; }
+  PlannerCapabilities capabilities() const override { return kCapabilities; }
+  static constexpr PlannerCapabilities kCapabilities{false, true};
   const Quadtree& quadtree() const { return *tree_; }
   /// The subgoal graph (null when options.graph is quadtree).
   const SubgoalGraph* subgoal_graph() const { return subgoals_.get(); }

@@ -1,5 +1,6 @@
 // SPIKE in world units (metres, radians): the map, robot radius, safety
-// distance, output spacing and the moving obstacles; what spike_node wraps.
+// distance, output spacing, the algorithm (planner_factory.h) and the moving
+// obstacles; what spike_node wraps.
 #pragma once
 
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "mrt_spike/map_sources.h"
 #include "mrt_spike/moving_obstacles.h"
+#include "mrt_spike/obstacle_tracker.h"
 #include "mrt_spike/poses.h"
 
 namespace mrt::spike {
@@ -17,6 +19,8 @@ struct WorldPlannerOptions {
   double safety_distance = 0.1;  ///< m, added to the robot radius
   double spacing = 0.25;         ///< m between output poses
   double horizon = 0.5;          ///< s of an obstacle's motion its footprint covers
+  /// The algorithm (make_dynamic_planner): spike, astar or jps.
+  std::string planner = "spike";
   SpikeOptions spike;
 };
 
@@ -29,27 +33,30 @@ struct WorldPlan {
   double nearest_x = 0.0, nearest_y = 0.0;  ///< when not solved: nearest reachable point
 };
 
-class WorldPlanner {
+class WorldPlanner : public ObstacleSink {
  public:
   /// `map` is the raw map (resolution = the finest); it is inflated by robot
-  /// radius + safety distance here (preprocessing, once).
+  /// radius + safety distance here (preprocessing, once). An algorithm that
+  /// cannot plan among moving obstacles: std::invalid_argument saying why.
   WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options);
   WorldPlan plan(double x0, double y0, double x1, double y1);
   /// A moving obstacle at (x, y) m of radius r m moving at (vx, vy) m/s.
-  void set_obstacle(int id, double x, double y, double r, double vx, double vy);
-  void remove_obstacle(int id);
+  void set_obstacle(int id, double x, double y, double r, double vx, double vy) override;
+  void remove_obstacle(int id) override;
   /// True while the waypoints are still free of every obstacle.
   bool still_valid(const WorldPlan& p) const;
   const WorldGrid& map() const { return map_; }
-  const OccupancyGrid& inflated() const { return spike_->obstacles().base(); }
-  const OccupancyGrid& with_obstacles() const { return spike_->obstacles().grid(); }
-  const Quadtree& quadtree() const { return spike_->static_planner().quadtree(); }
+  const OccupancyGrid& inflated() const { return planner_->obstacles().base(); }
+  const OccupancyGrid& with_obstacles() const { return planner_->obstacles().grid(); }
+  /// SPIKE's quadtree; nullptr for the algorithms without one.
+  const Quadtree* quadtree() const;
+  const DynamicPlanner& planner() const { return *planner_; }
   const WorldPlannerOptions& options() const { return options_; }
 
  private:
   WorldGrid map_;
   WorldPlannerOptions options_;
-  std::unique_ptr<DynamicSpike> spike_;
+  std::unique_ptr<DynamicPlanner> planner_;
 };
 
 }  // namespace mrt::spike

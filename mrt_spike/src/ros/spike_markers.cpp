@@ -47,15 +47,17 @@ visualization_msgs::MarkerArray static_markers(const WorldPlanner& p, const std:
   clear.action = visualization_msgs::Marker::DELETEALL;
   a.markers.push_back(clear);
   const GridFrame& f = p.map().frame;
-  visualization_msgs::Marker d = base(frame, "decomposition", visualization_msgs::Marker::LINE_LIST, f.resolution * 0.2);
-  d.color.g = 0.7f, d.color.b = 1.0f, d.color.a = 0.5f;
-  for (const QuadLeaf& l : p.quadtree().leaves()) {
-    if (l.size < 2) continue;  // the finest cells: the inflated marker shows them
-    const double x0 = l.x - 0.5, y0 = l.y - 0.5, x1 = l.x + l.size - 0.5, y1 = l.y + l.size - 0.5;
-    const geometry_msgs::Point c[4] = {point(f, x0, y0), point(f, x1, y0), point(f, x1, y1), point(f, x0, y1)};
-    for (int k = 0; k < 4; ++k) d.points.push_back(c[k]), d.points.push_back(c[(k + 1) % 4]);
+  if (const Quadtree* tree = p.quadtree()) {  // SPIKE's; the grid planners have none
+    visualization_msgs::Marker d = base(frame, "decomposition", visualization_msgs::Marker::LINE_LIST, f.resolution * 0.2);
+    d.color.g = 0.7f, d.color.b = 1.0f, d.color.a = 0.5f;
+    for (const QuadLeaf& l : tree->leaves()) {
+      if (l.size < 2) continue;  // the finest cells: the inflated marker shows them
+      const double x0 = l.x - 0.5, y0 = l.y - 0.5, x1 = l.x + l.size - 0.5, y1 = l.y + l.size - 0.5;
+      const geometry_msgs::Point c[4] = {point(f, x0, y0), point(f, x1, y0), point(f, x1, y1), point(f, x0, y1)};
+      for (int k = 0; k < 4; ++k) d.points.push_back(c[k]), d.points.push_back(c[(k + 1) % 4]);
+    }
+    a.markers.push_back(d);
   }
-  a.markers.push_back(d);
   visualization_msgs::Marker i = cells(p, p.inflated(), p.map().grid, frame, "inflated");
   i.color.r = 1.0f, i.color.g = 0.6f, i.color.a = 0.4f;
   a.markers.push_back(i);

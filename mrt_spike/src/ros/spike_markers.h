@@ -10,8 +10,9 @@
 
 namespace mrt::spike {
 
-/// "decomposition" (quadtree leaves' outlines, LINE_LIST) and "inflated"
-/// (cells blocked by the inflation only, CUBE_LIST); replaces all markers.
+/// "decomposition" (quadtree leaves' outlines, LINE_LIST; only with SPIKE's
+/// quadtree) and "inflated" (cells blocked by the inflation only,
+/// CUBE_LIST); replaces all markers.
 visualization_msgs::MarkerArray static_markers(const WorldPlanner& p, const std::string& frame);
 /// "moving_obstacles": the cells blocked by the footprints (CUBE_LIST).
 visualization_msgs::MarkerArray obstacle_markers(const WorldPlanner& p, const std::string& frame);
