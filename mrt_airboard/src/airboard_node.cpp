@@ -225,7 +225,7 @@ class AirboardNode : public SessionListener {
 
   void publish_odometry(const ros::Time& stamp) {
     namespace rc = mrt::ros_common;
-    const EncoderOdometry& odom = session_.odometry();
+    const WheelOdometry& odom = session_.odometry();
     // Encoder odometry: small, growing-free diagonal covariances (x, y, yaw);
     // z, roll, pitch: not measured.
     const rc::Covariance2D pose_cov = {1e-3, 0, 0, 0, 1e-3, 0, 0, 0, 1e-2};

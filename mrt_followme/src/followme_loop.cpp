@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "mrt_airboard/brian_mapping.h"
 #include "mrt_brian/brian.h"
-#include "mrt_followme/encoder_odometry.h"
+#include "mrt_common/brian_mapping.h"
+#include "mrt_common/wheel_odometry.h"
 #include "mrt_followme/unmapped_echo.h"
 #include "mrt_followme/visitor_tracker.h"
 #include "mrt_murea/feature_map.h"
@@ -27,7 +27,7 @@ namespace mrt::followme {
 namespace {
 
 /// Mr. BRIAN with Roby's rule base: crisp data in (the previous commands fed
-/// back), a body twist out through the AIRBoard's BrianMapping.
+/// back), a body twist out through mrt_common's BrianMapping.
 class BrianDriver {
  public:
   explicit BrianDriver(const std::string& dir) : brian_(brian::Brian::from_path(dir)) {}
@@ -47,7 +47,7 @@ class BrianDriver {
 
  private:
   std::unique_ptr<brian::Brian> brian_;
-  const airboard::BrianMapping mapping_{airboard::BrianMappingParams{}};
+  const common::BrianMapping mapping_{common::BrianMappingParams{}};
   double last_speed_ = 0.0, last_jog_ = 0.0;
 };
 
@@ -57,7 +57,7 @@ class Localization {
   Localization(const sim::World& world, const Pose2D& initial) : map_(world), tracker_(map_, options()) {
     tracker_.set_pose(initial, {0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.003});
   }
-  void frame(const EncoderOdometry& odo, const std::vector<sim::SeenObject>& seen) {
+  void frame(const common::WheelOdometry& odo, const std::vector<sim::SeenObject>& seen) {
     const Pose2D delta = last_odo_.inverse() * odo.pose();
     const double moved = odo.travelled() - last_travelled_;
     last_odo_ = odo.pose();
@@ -76,7 +76,7 @@ class Localization {
     }
     tracker_.update(percepts);
   }
-  Pose2D pose(const EncoderOdometry& odo) const { return tracker_.pose() * (last_odo_.inverse() * odo.pose()); }
+  Pose2D pose(const common::WheelOdometry& odo) const { return tracker_.pose() * (last_odo_.inverse() * odo.pose()); }
 
  private:
   static murea::TrackerOptions options() {
@@ -160,7 +160,7 @@ struct FollowMeSession::Impl {
   std::unique_ptr<Guide> guide;
   LegPlanner planner;
   BrianDriver brian;
-  EncoderOdometry odometry;
+  common::WheelOdometry odometry;
   Localization localization;
   roby::SonarSectors sectors;
   std::vector<std::string> sector_names;
@@ -206,7 +206,7 @@ struct FollowMeSession::Impl {
         tracker(cfg.visitor.color),
         planner(simulator.world(), cfg.guide),
         brian(opt.brian),
-        odometry(rc.base.wheel_radius, rc.base.track, rc.sensors.ticks_per_rev),
+        odometry(rc.base, rc.sensors.ticks_per_rev),
         localization(simulator.world(), rc.initial_pose),
         sectors(mounts(rc), roby::default_sectors(), rc.sensors.sonars.empty() ? 5.0 : rc.sensors.sonars[0].max_range),
         period(simulator.period(opt.brian_rate)),
