@@ -9,6 +9,7 @@
 
 #include "mrt_brian/brian.h"
 #include "mrt_common/brian_mapping.h"
+#include "mrt_common/package_path.h"
 #include "mrt_common/wheel_odometry.h"
 #include "mrt_followme/unmapped_echo.h"
 #include "mrt_followme/visitor_tracker.h"
@@ -30,7 +31,8 @@ namespace {
 /// back), a body twist out through mrt_common's BrianMapping.
 class BrianDriver {
  public:
-  explicit BrianDriver(const std::string& dir) : brian_(brian::Brian::from_path(dir)) {}
+  BrianDriver(const std::string& dir, const std::map<std::string, std::string>& packages)
+      : brian_(brian::Brian::from_path(dir, options(packages))) {}
 
   std::optional<common::Twist2D> run(roby::CrispInputs in) {
     in.last_speed_cm = last_speed_;
@@ -46,6 +48,12 @@ class BrianDriver {
   }
 
  private:
+  static brian::BrianOptions options(const std::map<std::string, std::string>& packages) {
+    brian::BrianOptions o;
+    o.packages = common::package_finder(packages);
+    return o;
+  }
+
   std::unique_ptr<brian::Brian> brian_;
   const common::BrianMapping mapping_{common::BrianMappingParams{}};
   double last_speed_ = 0.0, last_jog_ = 0.0;
@@ -205,7 +213,7 @@ struct FollowMeSession::Impl {
         rc(simulator.robots()[r].config),
         tracker(cfg.visitor.color),
         planner(simulator.world(), cfg.guide),
-        brian(opt.brian),
+        brian(opt.brian, opt.packages),
         odometry(rc.base, rc.sensors.ticks_per_rev),
         localization(simulator.world(), rc.initial_pose),
         sectors(mounts(rc), roby::default_sectors(), rc.sensors.sonars.empty() ? 5.0 : rc.sensors.sonars[0].max_range),
