@@ -245,7 +245,7 @@ struct FollowMeSession::Impl {
     known.walls.push_back({d.a, d.b});
     planner.rebuild(simulator.world());
     closed.push_back(name);
-    guide->invalidate_plan(now, "door_closed");
+    guide->close_door(d, now);
   }
 
   // One simulation step: sensors, localization, the visitor's track, measures.
