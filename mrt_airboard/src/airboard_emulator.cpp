@@ -1,15 +1,21 @@
 // airboard_emulator: the AIRBoard firmware model on a pseudo-terminal.
 // A plain program, runnable as a <node> in a launch file (ROS arguments of
-// the form name:=value are ignored); only with --ros-time does it join the
-// ROS graph, to take its board time from ros::Time (a simulator's /clock
-// when /use_sim_time is true).
+// the form name:=value are ignored); only with --ros-time or --sim-wheel-cmd
+// does it join the ROS graph: to take its board time from ros::Time (a
+// simulator's /clock when /use_sim_time is true), and to publish the wheel
+// speeds the board reports, at every state frame it sends, as the wheel
+// commands of a simulated base (mrt_msgs/WheelCommand, MODE_SPEED): the
+// emulated board's wheels drive mrt_sim's robot, the driver knows nothing
+// of it.
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include <mrt_msgs/WheelCommand.h>
 #include <ros/ros.h>
 
 #include "mrt_airboard/pty_emulator.h"
@@ -36,6 +42,10 @@ void usage() {
       "  --require-checked     refuse plain SET_SPEED / SET_PWM from power-up (CRC-32 checked ones only)\n"
       "  --ros-time            board time follows ros::Time (the simulator's /clock under /use_sim_time)\n"
       "                        instead of the wall clock; needs a ROS master\n"
+      "  --sim-wheel-cmd TOPIC publish the wheel speeds of every state frame the board sends as\n"
+      "                        mrt_msgs/WheelCommand (MODE_SPEED) on TOPIC (a simulator's\n"
+      "                        <robot>/wheel_cmd: the board's wheels drive the simulated base);\n"
+      "                        needs a ROS master\n"
       "Prints 'pty: <slave path>' on stdout, serves until SIGINT/SIGTERM, then\n"
       "prints its statistics on stderr. Arguments name:=value (ROS) are ignored.\n";
 }
@@ -44,7 +54,7 @@ void usage() {
 int main(int argc, char** argv) {
   mrt::airboard::FirmwareConfig fw;
   mrt::airboard::LineFaults faults;
-  std::string link;
+  std::string link, sim_wheel_cmd;
   bool ros_time = false;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -69,6 +79,7 @@ int main(int argc, char** argv) {
       else if (a == "--baud") faults.baud = std::stoi(val());
       else if (a == "--require-checked") fw.require_checked = true;
       else if (a == "--ros-time") ros_time = true;
+      else if (a == "--sim-wheel-cmd") sim_wheel_cmd = val();
       else if (a == "--seed") faults.seed = static_cast<uint32_t>(std::stoul(val()));
       else if (a == "-h" || a == "--help") { usage(); return 0; }
       else throw std::invalid_argument("unknown option " + a);
@@ -78,10 +89,13 @@ int main(int argc, char** argv) {
     usage();
     return 2;
   }
+  const bool ros_node = ros_time || !sim_wheel_cmd.empty();
   std::unique_ptr<ros::NodeHandle> nh;
-  if (ros_time) {
+  ros::Publisher wheel_pub;
+  if (ros_node) {
     ros::init(argc, argv, "airboard_emulator", ros::init_options::NoSigintHandler);
     nh = std::make_unique<ros::NodeHandle>();  // starts the node: /clock is followed from here on
+    if (!sim_wheel_cmd.empty()) wheel_pub = nh->advertise<mrt_msgs::WheelCommand>(sim_wheel_cmd, 10);
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -89,6 +103,14 @@ int main(int argc, char** argv) {
   try {
     mrt::airboard::PtyEmulator emu(fw, faults, link);
     if (ros_time) emu.set_time_source([] { return ros::Time::now().toSec(); });
+    if (!sim_wheel_cmd.empty())
+      emu.set_state_observer([&wheel_pub](uint32_t, const std::vector<double>& speeds) {
+        mrt_msgs::WheelCommand c;
+        c.header.stamp = ros::Time::now();
+        c.mode = mrt_msgs::WheelCommand::MODE_SPEED;
+        c.speed = speeds;
+        wheel_pub.publish(c);
+      });
     std::cout << "pty: " << emu.slave_path() << std::endl;
     emu.run(g_stop);
     const auto& s = emu.stats();
@@ -103,6 +125,6 @@ int main(int argc, char** argv) {
     std::cerr << "airboard_emulator: " << e.what() << "\n";
     return 1;
   }
-  if (ros_time) ros::shutdown();
+  if (ros_node) ros::shutdown();
   return 0;
 }

@@ -37,7 +37,6 @@ struct NodeOptions {
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";
   bool publish_tf = true;
-  bool mirror_to_sim = false;
   std::vector<std::string> joint_names;  // ~joint_names; empty: wheel_joint_names(base type)
   SessionOptions session;
 };
@@ -93,7 +92,6 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
       .get("odom_frame", o.odom_frame)
       .get("base_frame", o.base_frame)
       .get("publish_tf", o.publish_tf)
-      .get("mirror_to_sim", o.mirror_to_sim)
       .get("joint_names", o.joint_names)
       .get("rate", s.rate)
       .get("cmd_timeout", s.cmd_timeout)
@@ -128,7 +126,6 @@ class AirboardNode : public SessionListener {
     odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     status_pub_ = nh.advertise<mrt_msgs::AirboardStatus>("airboard_status", 10);
     joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
-    if (o_.mirror_to_sim) sim_pub_ = nh.advertise<mrt_msgs::WheelCommand>("sim_wheel_cmd", 10);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &AirboardNode::on_cmd_vel, this);
     brian_sub_ = nh.subscribe("brian_commands", 10, &AirboardNode::on_brian, this);
     wheel_sub_ = nh.subscribe("wheel_cmd", 10, &AirboardNode::on_wheel_cmd, this);
@@ -199,15 +196,6 @@ class AirboardNode : public SessionListener {
     }
     wheel_pub_.publish(ws);
     publish_joint_states(ws);
-    if (o_.mirror_to_sim) {
-      // Coupling to mrt_sim: the emulated wheels' measured speeds drive the
-      // simulated base (remap sim_wheel_cmd to /<robot>/wheel_cmd).
-      mrt_msgs::WheelCommand wc;
-      wc.header = ws.header;
-      wc.mode = mrt_msgs::WheelCommand::MODE_SPEED;
-      wc.speed = ws.speed;
-      sim_pub_.publish(wc);
-    }
     publish_odometry(stamp);
     publish_status(stamp, &s);
   }
@@ -225,7 +213,7 @@ class AirboardNode : public SessionListener {
 
   void publish_odometry(const ros::Time& stamp) {
     namespace rc = mrt::ros_common;
-    const EncoderOdometry& odom = session_.odometry();
+    const WheelOdometry& odom = session_.odometry();
     // Encoder odometry: small, growing-free diagonal covariances (x, y, yaw);
     // z, roll, pitch: not measured.
     const rc::Covariance2D pose_cov = {1e-3, 0, 0, 0, 1e-3, 0, 0, 0, 1e-2};
@@ -347,7 +335,7 @@ class AirboardNode : public SessionListener {
   std::size_t n_;
   std::map<std::string, double> last_log_;  // throttle key -> wall time of the last message
 
-  ros::Publisher wheel_pub_, odom_pub_, status_pub_, sim_pub_, joint_pub_;
+  ros::Publisher wheel_pub_, odom_pub_, status_pub_, joint_pub_;
   ros::Subscriber cmd_sub_, brian_sub_, wheel_sub_;
   ros::Timer control_timer_, read_timer_, diag_timer_;
   diagnostic_updater::Updater diag_;

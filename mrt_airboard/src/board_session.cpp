@@ -56,7 +56,7 @@ BoardSession::BoardSession(const SessionOptions& o, std::unique_ptr<BoardLink> l
       n_(o_.base.wheel_count()),
       limiter_(o_.base),
       brian_(o_.brian),
-      odom_(o_.base),
+      odom_(o_.base, o_.base.counts_per_rev),
       backoff_(o_.reconnect_min, o_.reconnect_max) {}
 
 void BoardSession::log(Level level, const std::string& key, const std::string& text) {

@@ -89,9 +89,32 @@ void PtyEmulator::write_out(const uint8_t* d, std::size_t n) {
   stats_.bytes_dropped_out += n - done;
 }
 
+void PtyEmulator::observe(const std::vector<uint8_t>& out) {
+  out_dec_.feed(out.data(), out.size(), [this](const Frame& f) {
+    BoardState s;
+    ShortState ss;
+    std::vector<double> speeds;
+    uint32_t ms = 0;
+    if (parse_state(f, &s)) {
+      ms = s.time_ms;
+      for (const MotorState& m : s.motors) speeds.push_back(m.speed);
+    } else if (parse_short_state(f, &ss)) {
+      ms = ss.time_ms;
+      for (int i = 0; i < fw_.motors(); ++i) speeds.push_back(to_mrad(fw_.measured_speed(i)) / 1000.0);
+    } else {
+      return;
+    }
+    if (observed_ && ms == observed_ms_) return;
+    observed_ = true;
+    observed_ms_ = ms;
+    observer_(ms, speeds);
+  });
+}
+
 void PtyEmulator::flush() {
   std::vector<uint8_t> out = fw_.take_output();
   if (out.empty()) return;
+  if (observer_) observe(out);
   corrupt(out.data(), out.size(), faults_.corrupt_tx, &stats_.bytes_corrupted_out);
   if (byte_time_.count() == 0) return write_out(out.data(), out.size());
   const auto now = Clock::now();

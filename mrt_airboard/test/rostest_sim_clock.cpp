@@ -1,6 +1,7 @@
 // sim_clock.test: the emulated AIRBoard on mrt_sim's /clock at a real-time
 // factor of 2. cmd_vel (0.3 m/s, 0.5 rad/s) goes to airboard_node, whose
-// board's measured wheel speeds drive the simulated base (mirror_to_sim).
+// board's measured wheel speeds drive the simulated base (the emulator's
+// --sim-wheel-cmd).
 // Over 4 s of simulated time in steady state (from the first to the last
 // board message received, at their reception in simulated time; the counts'
 // least-squares rate over them), each wheel's board counts (8192 a revolution) must equal the simulator's wheel

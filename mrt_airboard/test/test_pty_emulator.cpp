@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <mutex>
 #include <thread>
+#include <vector>
 #include <unistd.h>
 
 #include "mrt_airboard/pty_emulator.h"
@@ -157,6 +160,57 @@ TEST(PtyEmulator, CarriesBytesAtTheBaudRate) {
   EXPECT_GE(ms, 7.2);
   stop = true;
   t.join();
+}
+
+// The emulator reports every state frame it sends (what airboard_emulator
+// --sim-wheel-cmd publishes for the simulator): each STATE the PC decodes is
+// among the reports, same board time, the same speeds to the bit, and a
+// reply beside the streamed frame of the same millisecond is reported once.
+// Commanded 5 and -5 rad/s for 0.3 s (tau 20 ms), the wheels measure 5 and
+// -5 rad/s within 2 %.
+TEST(PtyEmulator, ReportsTheStatesItSends) {
+  const std::string link = "/tmp/mrt_airboard_gtest_observer_" + std::to_string(::getpid());
+  std::atomic<bool> stop{false};
+  PtyEmulator emu(FirmwareConfig{}, LineFaults{}, link);
+  std::mutex m;
+  std::map<uint32_t, std::vector<double>> reported;
+  int repeats = 0;
+  emu.set_state_observer([&](uint32_t ms, const std::vector<double>& speeds) {
+    std::lock_guard<std::mutex> lock(m);
+    repeats += reported.count(ms) ? 1 : 0;
+    reported[ms] = speeds;
+  });
+  std::thread t([&] { emu.run(stop); });
+  SerialPort port;
+  port.open(link, 115200);
+  FrameDecoder dec;
+  auto f = encode_frame(make_set_stream(1, 10));
+  port.write(f.data(), f.size());
+  std::vector<BoardState> received;
+  for (uint8_t seq = 2; seq < 32; ++seq) {
+    f = encode_frame(make_set_speed(seq, {5.0, -5.0}));
+    port.write(f.data(), f.size());
+    read_until(port, dec, 1000, [&](const Frame& fr) {
+      BoardState st;
+      if (parse_state(fr, &st)) received.push_back(st);
+      return st.last_seq == seq;
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  stop = true;
+  t.join();
+  ASSERT_GE(received.size(), 30u);
+  std::lock_guard<std::mutex> lock(m);
+  EXPECT_EQ(repeats, 0);
+  for (const BoardState& st : received) {
+    const auto it = reported.find(st.time_ms);
+    ASSERT_NE(it, reported.end()) << "board time " << st.time_ms;
+    ASSERT_EQ(it->second.size(), 2u);
+    EXPECT_EQ(it->second[0], st.motors[0].speed);
+    EXPECT_EQ(it->second[1], st.motors[1].speed);
+  }
+  EXPECT_NEAR(received.back().motors[0].speed, 5.0, 0.1);
+  EXPECT_NEAR(received.back().motors[1].speed, -5.0, 0.1);
 }
 
 TEST(SerialPort, ReportsTheDeviceGoingAway) {

@@ -80,7 +80,7 @@ Brian::Brian(const std::string& fuzzyassoc, const std::string& fuzzyshapes, cons
 }
 
 std::unique_ptr<Brian> Brian::from_path(const std::string& path, const BrianOptions& options) {
-  return std::make_unique<Brian>(ConfigFiles::locate(path), options);
+  return std::make_unique<Brian>(ConfigFiles::locate(path, options.packages), options);
 }
 
 namespace {

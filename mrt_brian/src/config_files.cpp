@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "mrt_brian/behavior_list_parser.h"
@@ -73,9 +74,10 @@ std::vector<std::string> ConfigFiles::all(Slot s) const {
   return out;
 }
 
-ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
+ConfigFiles ConfigFiles::from_list_file(const std::string& path, common::PackageFinder packages) {
   const std::string text = read_text_file(path);
   ConfigFiles f;
+  f.packages = std::move(packages);
   f.base_dir = fs::path(path).parent_path().string();
   if (f.base_dir.empty()) f.base_dir = ".";
   std::vector<std::vector<std::string>> slots;  // one entry a non-comment line
@@ -90,7 +92,13 @@ ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
       throw ParseError(path, lineno, static_cast<int>(b) + 1, "expected nine file names, got more");
     std::istringstream words(line);
     std::vector<std::string> names;
-    for (std::string w; words >> w && w[0] != '#';) names.push_back(f.resolve(w));  // '#': a comment to the end
+    for (std::string w; words >> w && w[0] != '#';) {  // '#': a comment to the end
+      try {
+        names.push_back(f.resolve(w));
+      } catch (const std::invalid_argument& e) {
+        throw ParseError(path, lineno, static_cast<int>(line.find(w)) + 1, e.what());
+      }
+    }
     if (!names.empty()) slots.push_back(std::move(names));  // (only other blanks: an empty line)
   }
   // The manual's constructor: eight, no predicate actions.
@@ -105,7 +113,7 @@ ConfigFiles ConfigFiles::from_list_file(const std::string& path) {
   return f;
 }
 
-ConfigFiles ConfigFiles::locate(const std::string& path) {
+ConfigFiles ConfigFiles::locate(const std::string& path, common::PackageFinder packages) {
   // error_code overloads: a path that cannot even be examined (a
   // non-searchable directory on the way, a name too long) is a ParseError
   // naming the path, never a std::filesystem::filesystem_error.
@@ -113,11 +121,16 @@ ConfigFiles ConfigFiles::locate(const std::string& path) {
   const fs::file_status st = fs::status(path, ec);
   if (ec && ec != std::errc::no_such_file_or_directory)
     throw ParseError(path, 0, 0, "cannot access: " + ec.message());
-  if (fs::is_directory(st)) return from_directory(path);
-  return from_list_file(path);
+  if (fs::is_directory(st)) {
+    ConfigFiles f = from_directory(path);
+    f.packages = std::move(packages);
+    return f;
+  }
+  return from_list_file(path, std::move(packages));
 }
 
 std::string ConfigFiles::resolve(const std::string& p) const {
+  if (common::is_package_url(p)) return common::resolve_package_url(p, packages);
   if (p.empty() || fs::path(p).is_absolute()) return p;
   // Not lexically normalised: "a/link/../b" must go through the symlink.
   return (fs::path(base_dir) / p).string();
@@ -149,7 +162,12 @@ ParsedConfig ParsedConfig::load(const ConfigFiles& files, const std::vector<std:
   c.out_assocs = parse_slot<AssociationDef>(files, Slot::kSFtoc, parse_associations);
   c.out_shapes = parse_slot<ShapeDef>(files, Slot::kSShape, parse_shapes);
   for (const auto& b : c.behaviors) {
-    const std::string path = files.resolve(b.path);
+    std::string path;
+    try {
+      path = files.resolve(b.path);
+    } catch (const std::invalid_argument& e) {
+      throw ParseError(b.file, b.line, b.column, e.what());
+    }
     std::string text;
     try {
       text = read_text_file(path);

@@ -174,3 +174,42 @@ TEST_F(MultiFileTest, UnknownNameInTheSecondFileNamesThatFileAndEveryFileOfTheSl
   EXPECT_EQ(d[0].message, msg);
   EXPECT_EQ(load_error(extra_ / "Cando.ini", 2), msg);
 }
+
+// Another package's files by package path (FollowMe names Roby's rule base
+// so, in a source tree, a devel and an install space alike): extra/ as the
+// package "extra_rules", found through the finder (ROS_PACKAGE_PATH when
+// none is given), in BrianConfigs.ini and in a behaviour list.
+TEST_F(MultiFileTest, PackagePathsResolveThroughTheFinder) {
+  write(extra_ / "behavior.txt", "(level 2 Wait package://extra_rules/wait.rul)\n");
+  write(list(), "ctof.txt package://extra_rules/ctof.txt\n"
+                "shape_ctof.txt package://extra_rules/shape_ctof.txt\n"
+                "Predicate.ini package://extra_rules/Predicate.ini\n"
+                "PredicateActions.ini\n"
+                "Cando.ini package://extra_rules/Cando.ini\n"
+                "behavior.txt package://extra_rules/behavior.txt\n"
+                "want.txt package://extra_rules/want.txt\n"
+                "s_ftoc.txt\n"
+                "s_shape.txt\n");
+  const mrt::common::PackageFinder finder = [&](const std::string& n) {
+    return n == "extra_rules" ? extra_.string() : std::string();
+  };
+  const ConfigFiles f = ConfigFiles::from_list_file(list(), finder);
+  ASSERT_EQ(f.more[static_cast<std::size_t>(Slot::kPredicates)].size(), 1u);
+  EXPECT_EQ(f.more[static_cast<std::size_t>(Slot::kPredicates)][0], (extra_ / "Predicate.ini").string());
+  BrianOptions o;
+  o.packages = finder;
+  const auto b = Brian::from_path(list(), o);
+  ASSERT_EQ(b->engine().size(), 2);
+  // As in TwoFilesForOneSlotLoadTheUnion: Visitor 150 stops the robot.
+  EXPECT_NEAR(speed(b->run({{"Obstacle", 150, 1}, {"Visitor", 150, 1}})), 0.0, 1e-9);
+  // A package nobody knows: the list file's line and column, and its name.
+  const mrt::common::PackageFinder none = [](const std::string&) { return std::string(); };
+  try {
+    ConfigFiles::from_list_file(list(), none);
+    ADD_FAILURE() << "no error for an unknown package";
+  } catch (const mrt::common::ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.column(), 10);
+    EXPECT_NE(e.message().find("package 'extra_rules'"), std::string::npos) << e.what();
+  }
+}

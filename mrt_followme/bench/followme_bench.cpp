@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   o.world = argc > 1 ? argv[1] : MRT_WORLDS_DIR "/museum.yaml";
   o.config = config + "/followme.yaml";
   o.brian = config + "/brian/BrianConfigs.ini";
+  o.packages = {{"mrt_roby", MRT_ROBY_DIR}};  // Roby's rule base, by the build
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   const auto r = mrt::followme::run_followme_loop(o);

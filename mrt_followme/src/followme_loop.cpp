@@ -7,9 +7,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include "mrt_airboard/brian_mapping.h"
 #include "mrt_brian/brian.h"
-#include "mrt_followme/encoder_odometry.h"
+#include "mrt_common/brian_mapping.h"
+#include "mrt_common/package_path.h"
+#include "mrt_common/wheel_odometry.h"
 #include "mrt_followme/unmapped_echo.h"
 #include "mrt_followme/visitor_tracker.h"
 #include "mrt_murea/feature_map.h"
@@ -27,10 +28,11 @@ namespace mrt::followme {
 namespace {
 
 /// Mr. BRIAN with Roby's rule base: crisp data in (the previous commands fed
-/// back), a body twist out through the AIRBoard's BrianMapping.
+/// back), a body twist out through mrt_common's BrianMapping.
 class BrianDriver {
  public:
-  explicit BrianDriver(const std::string& dir) : brian_(brian::Brian::from_path(dir)) {}
+  BrianDriver(const std::string& dir, const std::map<std::string, std::string>& packages)
+      : brian_(brian::Brian::from_path(dir, options(packages))) {}
 
   std::optional<common::Twist2D> run(roby::CrispInputs in) {
     in.last_speed_cm = last_speed_;
@@ -46,8 +48,14 @@ class BrianDriver {
   }
 
  private:
+  static brian::BrianOptions options(const std::map<std::string, std::string>& packages) {
+    brian::BrianOptions o;
+    o.packages = common::package_finder(packages);
+    return o;
+  }
+
   std::unique_ptr<brian::Brian> brian_;
-  const airboard::BrianMapping mapping_{airboard::BrianMappingParams{}};
+  const common::BrianMapping mapping_{common::BrianMappingParams{}};
   double last_speed_ = 0.0, last_jog_ = 0.0;
 };
 
@@ -57,7 +65,7 @@ class Localization {
   Localization(const sim::World& world, const Pose2D& initial) : map_(world), tracker_(map_, options()) {
     tracker_.set_pose(initial, {0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.003});
   }
-  void frame(const EncoderOdometry& odo, const std::vector<sim::SeenObject>& seen) {
+  void frame(const common::WheelOdometry& odo, const std::vector<sim::SeenObject>& seen) {
     const Pose2D delta = last_odo_.inverse() * odo.pose();
     const double moved = odo.travelled() - last_travelled_;
     last_odo_ = odo.pose();
@@ -76,7 +84,7 @@ class Localization {
     }
     tracker_.update(percepts);
   }
-  Pose2D pose(const EncoderOdometry& odo) const { return tracker_.pose() * (last_odo_.inverse() * odo.pose()); }
+  Pose2D pose(const common::WheelOdometry& odo) const { return tracker_.pose() * (last_odo_.inverse() * odo.pose()); }
 
  private:
   static murea::TrackerOptions options() {
@@ -160,7 +168,7 @@ struct FollowMeSession::Impl {
   std::unique_ptr<Guide> guide;
   LegPlanner planner;
   BrianDriver brian;
-  EncoderOdometry odometry;
+  common::WheelOdometry odometry;
   Localization localization;
   roby::SonarSectors sectors;
   std::vector<std::string> sector_names;
@@ -205,8 +213,8 @@ struct FollowMeSession::Impl {
         rc(simulator.robots()[r].config),
         tracker(cfg.visitor.color),
         planner(simulator.world(), cfg.guide),
-        brian(opt.brian),
-        odometry(rc.base.wheel_radius, rc.base.track, rc.sensors.ticks_per_rev),
+        brian(opt.brian, opt.packages),
+        odometry(rc.base, rc.sensors.ticks_per_rev),
         localization(simulator.world(), rc.initial_pose),
         sectors(mounts(rc), roby::default_sectors(), rc.sensors.sonars.empty() ? 5.0 : rc.sensors.sonars[0].max_range),
         period(simulator.period(opt.brian_rate)),
@@ -237,7 +245,7 @@ struct FollowMeSession::Impl {
     known.walls.push_back({d.a, d.b});
     planner.rebuild(simulator.world());
     closed.push_back(name);
-    guide->invalidate_plan(now, "door_closed");
+    guide->close_door(d, now);
   }
 
   // One simulation step: sensors, localization, the visitor's track, measures.

@@ -63,6 +63,27 @@ void Guide::invalidate_plan(double t, const std::string& why) {
   if (job_ == Job::kGuide) enter(Job::kReplan, t, why);
 }
 
+void Guide::close_door(const Door& d, double t, double replan_delay) {
+  closed_.push_back(d);
+  if (replan_delay <= 0.0) {
+    replan_at_.reset();
+    invalidate_plan(t, "door_closed");
+  } else {
+    replan_at_ = t + replan_delay;
+  }
+}
+
+std::vector<DoorDisc> door_discs(const Door& d, double spacing, double radius) {
+  const double len = dist(d.a, d.b);
+  const int n = std::max(2, static_cast<int>(std::ceil(len / spacing)) + 1);
+  std::vector<DoorDisc> out;
+  for (int i = 0; i < n; ++i) {
+    const double k = static_cast<double>(i) / (n - 1);
+    out.push_back({d.name + "_" + std::to_string(i), {d.a.x + k * (d.b.x - d.a.x), d.a.y + k * (d.b.y - d.a.y)}, radius});
+  }
+  return out;
+}
+
 void Guide::set_tour(std::vector<Exhibit> tour, double t) {
   tour_ = std::move(tour);
   current_ = 0;
@@ -74,6 +95,10 @@ GuideOutput Guide::update(const GuideInput& in) {
   GuideOutput out;
   dt_ = std::max(0.0, in.t - last_t_);
   last_t_ = in.t;
+  if (replan_at_ && in.t >= *replan_at_) {  // a door closed a moment ago
+    replan_at_.reset();
+    invalidate_plan(in.t, "door_closed");
+  }
   switch (job_) {
     case Job::kReplan:
       if (!requested_) {

@@ -15,14 +15,15 @@ using mrt::common::testing::Output;
 TEST(FollowMeRunCli, HelpExitsZeroAndListsEveryOption) {
   const Output o = help(FOLLOWME_RUN);
   EXPECT_EQ(o.code, 0);
-  for (const char* opt : {"--world", "--config", "--brian", "--tour", "--robot", "--duration", "--close-door",
+  for (const char* opt : {"--world", "--config", "--brian", "--package", "--tour", "--robot", "--duration", "--close-door",
                           "--close-at-leg", "--wander-after", "--truth", "--trace"})
     EXPECT_NE(o.text.find(opt), std::string::npos) << opt;
 }
 
 TEST(FollowMeRunCli, UsageErrorsExitTwo) {
   for (const char* args : {"--bogus", "--world w --config c --brian b --duration 1x",
-                           "--world w --config c --brian b --duration 0", "--world w --config c"}) {
+                           "--world w --config c --brian b --duration 0", "--world w --config c",
+                           "--world w --config c --brian b --package mrt_roby"}) {
     const Output o = err(FOLLOWME_RUN, args);
     EXPECT_EQ(o.code, 2) << args;
     EXPECT_NE(o.text.find("followme_run: "), std::string::npos) << o.text;

@@ -3,6 +3,7 @@
 
 #include "mrt_common/parse_error.h"
 #include "mrt_followme/museum.h"
+#include "mrt_world/world_loader.h"
 
 using namespace mrt::followme;
 
@@ -52,4 +53,20 @@ TEST(Config, CheckTour) {
   EXPECT_EQ(check_tour(c, {}), "the tour has no exhibit");
   EXPECT_EQ(check_tour(c, {"a", "a"}), "exhibit 'a' twice in the tour");
   EXPECT_EQ(check_tour(c, {"a", "z"}), "unknown exhibit 'z'");
+}
+
+// The doors are in the museum world too (mrt_world's `doors:`): FollowMe
+// reads its own (followme.yaml, the configuration's format keeps them), and
+// the two must name the same walls.
+TEST(Config, DoorsAgreeWithTheMuseumWorld) {
+  const FollowMeConfig c = load_followme_config(std::string(MRT_FOLLOWME_CONFIG) + "/followme.yaml");
+  const mrt::world::World w = mrt::world::load_world(std::string(MRT_WORLDS_DIR) + "/museum.yaml");
+  ASSERT_EQ(w.doors.size(), c.doors.size());
+  for (const Door& d : c.doors) {
+    const mrt::world::Door& wd = w.door(d.name);
+    EXPECT_DOUBLE_EQ(wd.span.a.x, d.a.x) << d.name;
+    EXPECT_DOUBLE_EQ(wd.span.a.y, d.a.y) << d.name;
+    EXPECT_DOUBLE_EQ(wd.span.b.x, d.b.x) << d.name;
+    EXPECT_DOUBLE_EQ(wd.span.b.y, d.b.y) << d.name;
+  }
 }

@@ -42,7 +42,11 @@ double command(const CommandList& c, const std::string& name) {
 
 class KeepVisitorRules : public ::testing::Test {
  protected:
-  void SetUp() override { brian_ = Brian::from_path(std::string(MRT_FOLLOWME_CONFIG) + "/brian/BrianConfigs.ini"); }
+  void SetUp() override {
+    mrt::brian::BrianOptions o;
+    o.packages = mrt::common::package_finder({{"mrt_roby", MRT_ROBY_DIR}});  // Roby's rule base, by the build
+    brian_ = Brian::from_path(std::string(MRT_FOLLOWME_CONFIG) + "/brian/BrianConfigs.ini", o);
+  }
   double speed(const CrispDataList& c) { return command(brian_->run(c), "Speed"); }
   std::unique_ptr<Brian> brian_;
 };

@@ -18,6 +18,7 @@ FollowMeLoopOptions options() {
   o.world = MRT_WORLDS_DIR "/museum.yaml";
   o.config = root + "/config/followme.yaml";
   o.brian = root + "/config/brian/BrianConfigs.ini";
+  o.packages = {{"mrt_roby", MRT_ROBY_DIR}};
   o.duration = 400.0;
   return o;
 }

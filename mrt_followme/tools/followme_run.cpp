@@ -40,6 +40,7 @@ void print_summary(const mrt::followme::FollowMeResult& r) {
 int main(int argc, char** argv) {
   mrt::followme::FollowMeLoopOptions o;
   std::string tour;
+  std::vector<std::string> packages;
   bool trace = false;
   CLI::App app{"FollowMe in closed loop without ROS (mrt_sim + MUREA + SPIKE + Mr. BRIAN); exit 0\n"
                "when the tour was completed, 1 when not, 2 on usage or file errors.",
@@ -47,6 +48,9 @@ int main(int argc, char** argv) {
   app.add_option("--world", o.world, "mrt_sim world file (YAML): the museum")->required();
   app.add_option("--config", o.config, "FollowMe configuration (config/followme/followme.yaml)")->required();
   app.add_option("--brian", o.brian, "Mr. BRIAN rule base (config/followme/brian)")->required();
+  app.add_option("--package", packages,
+                 "NAME=DIR: the directory of package NAME for the rule base's package:// paths (repeatable; "
+                 "default: found on ROS_PACKAGE_PATH)");
   app.add_option("--tour", tour, "exhibits of the tour, comma-separated (default: the configuration's)");
   app.add_option("--robot", o.robot, "robot name in the world")->capture_default_str();
   app.add_option("--duration", o.duration, "simulated time limit (s, > 0)")
@@ -58,6 +62,14 @@ int main(int argc, char** argv) {
   app.add_flag("--trace", trace, "print every guide event and, each second, the poses and jobs");
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
   o.tour = split(tour);
+  for (const std::string& p : packages) {
+    const auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == p.size()) {
+      std::cerr << "followme_run: --package expects NAME=DIR, got '" << p << "'\n";
+      return 2;
+    }
+    o.packages[p.substr(0, eq)] = p.substr(eq + 1);
+  }
   try {
     mrt::cli::Progress progress("followme_run", o.duration);
     double next = 0.0;

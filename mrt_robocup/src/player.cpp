@@ -8,9 +8,9 @@
 
 namespace mrt::robocup {
 
-airboard::BrianMappingParams mapping_for(const std::string& kinematics) {
-  if (kinematics == "differential") return airboard::BrianMappingParams::for_base(common::BaseType::kDifferential);
-  if (kinematics == "omni") return airboard::BrianMappingParams::for_base(common::BaseType::kOmni);
+common::BrianMappingParams mapping_for(const std::string& kinematics) {
+  if (kinematics == "differential") return common::BrianMappingParams::for_base(common::BaseType::kDifferential);
+  if (kinematics == "omni") return common::BrianMappingParams::for_base(common::BaseType::kOmni);
   throw std::invalid_argument("kinematics: expected 'differential' or 'omni', got '" + kinematics + "'");
 }
 

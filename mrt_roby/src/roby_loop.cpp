@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "mrt_airboard/brian_mapping.h"
 #include "mrt_brian/brian.h"
+#include "mrt_common/brian_mapping.h"
 #include "mrt_roby/crisp_builder.h"
 #include "mrt_roby/dgps_localizer.h"
 #include "mrt_roby/sonar_sectors.h"
@@ -83,7 +83,7 @@ class BrianCycle {
 
  private:
   std::unique_ptr<brian::Brian> brian_;
-  const airboard::BrianMapping mapping_{airboard::BrianMappingParams{}};
+  const common::BrianMapping mapping_{common::BrianMappingParams{}};
   CrispDataList crisp_;
   std::vector<std::pair<std::string, double>> commands_;
   double last_speed_ = 0.0, last_jog_ = 0.0;

@@ -16,14 +16,20 @@
 #include <utility>
 #include <vector>
 
-#include "mrt_airboard/brian_mapping.h"
 #include "mrt_airboard/kinematics.h"
-#include "mrt_airboard/odometry.h"
 #include "mrt_airboard/protocol.h"
 #include "mrt_airboard/serial_port.h"
 #include "mrt_airboard/state_tracker.h"
+#include "mrt_common/brian_mapping.h"
+#include "mrt_common/wheel_odometry.h"
 
 namespace mrt::airboard {
+
+/// Mr. BRIAN's commands as a twist, and the encoders' odometry: mrt_common's
+/// (shared with the applications' in-process loops).
+using mrt::common::BrianMapping;
+using mrt::common::BrianMappingParams;
+using mrt::common::WheelOdometry;
 
 /// The byte link to the board. open(), read() and write() throw SerialError
 /// when the device is missing or has gone (read and write close the link
@@ -148,7 +154,7 @@ class BoardSession {
   bool have_state() const { return have_state_; }
   const BoardState& last_state() const { return last_state_; }
   const StateTracker& tracker() const { return tracker_; }
-  const EncoderOdometry& odometry() const { return odom_; }
+  const WheelOdometry& odometry() const { return odom_; }
   const FrameDecoder::Stats& frame_stats() const { return dec_.stats(); }
   const SessionStats& stats() const { return stats_; }
   double next_reconnect_delay() const { return backoff_.current_delay(); }
@@ -185,7 +191,7 @@ class BoardSession {
   std::size_t n_ = 0;
   VelocityLimiter limiter_;
   BrianMapping brian_;
-  EncoderOdometry odom_;
+  WheelOdometry odom_;
   Backoff backoff_;
   FrameDecoder dec_;
   std::vector<uint8_t> tx_;

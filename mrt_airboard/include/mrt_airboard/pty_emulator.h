@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "mrt_airboard/firmware.h"
 
@@ -57,6 +58,17 @@ class PtyEmulator {
   /// time by the source's rate over the last 100 ms). Only between runs.
   void set_time_source(std::function<double()> seconds) { time_source_ = std::move(seconds); }
 
+  /// The wheel speeds the board reports, as the PC decodes them: called at
+  /// every state frame the board sends, the moment it sends it (before any
+  /// line fault), with its board time (ms) and one speed per motor (rad/s):
+  /// a STATE's measured speeds; for a SHORT_STATE, which carries none, the
+  /// firmware's measured speeds rounded to the wire's mrad/s. A frame of the
+  /// same board time as the previous one (a reply beside the streamed
+  /// frame) is not reported again. What a simulator takes as the robot's
+  /// wheel commands (airboard_emulator --sim-wheel-cmd). Only between runs.
+  using StateObserver = std::function<void(uint32_t board_ms, const std::vector<double>& speeds)>;
+  void set_state_observer(StateObserver f) { observer_ = std::move(f); }
+
   /// Only between runs.
   const Firmware& firmware() const { return fw_; }
   const EmulatorStats& stats() const { return stats_; }
@@ -70,6 +82,7 @@ class PtyEmulator {
   void write_out(const uint8_t* d, std::size_t n);
   void service_line(Clock::time_point now);  // moves throttled bytes whose time has come
   void corrupt(uint8_t* d, std::size_t n, double p, uint64_t* count);
+  void observe(const std::vector<uint8_t>& out);  // the state frames of the board's output
 
   Firmware fw_;
   LineFaults faults_;
@@ -83,6 +96,10 @@ class PtyEmulator {
   std::deque<std::pair<uint8_t, Clock::time_point>> rx_q_, tx_q_;
   Clock::time_point rx_free_{}, tx_free_{};
   std::function<double()> time_source_;
+  StateObserver observer_;
+  FrameDecoder out_dec_;  // the board's own output, for the observer
+  bool observed_ = false;
+  uint32_t observed_ms_ = 0;
 };
 
 }  // namespace mrt::airboard

@@ -47,6 +47,9 @@ struct BrianOptions {
   /// Other behaviour kinds, by file extension of the behaviour-list entry
   /// (e.g. ".const"); everything else is a rules file.
   std::map<std::string, BehaviorFactory> behavior_kinds;
+  /// Where `package://` names of the rule base's files find their package
+  /// (ConfigFiles::packages); empty: ROS_PACKAGE_PATH. Used by from_path().
+  common::PackageFinder packages;
   /// Legacy profile: called once per unknown name (`file:line: message`,
   /// as brian_check prints it) while loading; default: standard error.
   std::function<void(const std::string&)> warn;

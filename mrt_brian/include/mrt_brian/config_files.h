@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mrt_brian/config_ast.h"
+#include "mrt_common/package_path.h"
 
 namespace mrt::brian {
 
@@ -24,6 +25,10 @@ struct ConfigFiles {
   /// Directory relative behaviour paths resolve from (for every behaviour
   /// list of the slot: the directory of BrianConfigs.ini).
   std::string base_dir = ".";
+  /// Where `package://<package>/<path>` names (in a BrianConfigs.ini and in
+  /// behaviour lists) find their package; empty: ROS_PACKAGE_PATH
+  /// (mrt_common/package_path.h).
+  common::PackageFinder packages;
 
   const std::string& first(Slot s) const;
   std::string& first(Slot s);
@@ -39,10 +44,12 @@ struct ConfigFiles {
   /// the manual's eight, without PredicateActions), relative to its folder;
   /// a line may name several files separated by blanks (one slot, several
   /// files).
-  static ConfigFiles from_list_file(const std::string& path);
+  static ConfigFiles from_list_file(const std::string& path, common::PackageFinder packages = {});
   /// Directory or list file.
-  static ConfigFiles locate(const std::string& path);
-  /// `p` resolved against base_dir unless absolute.
+  static ConfigFiles locate(const std::string& path, common::PackageFinder packages = {});
+  /// `p` resolved against base_dir unless absolute; `package://<package>/...`
+  /// in the package's directory. Throws std::invalid_argument naming the
+  /// package when it cannot be found.
   std::string resolve(const std::string& p) const;
 };
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@ struct FollowMeLoopOptions {
   std::string world;        // mrt_sim world file (the museum)
   std::string config;       // config/followme.yaml
   std::string brian;        // rule base (config/brian: Roby's, shared)
+  /// Package directories for the rule base's package:// paths (what a build
+  /// gives a ROS-free program); packages not here: ROS_PACKAGE_PATH.
+  std::map<std::string, std::string> packages;
   std::string robot = "robot1";
   std::vector<std::string> tour;  // empty: the config's
   double duration = 600.0;  // s of simulated time at most

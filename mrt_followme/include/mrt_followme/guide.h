@@ -3,9 +3,12 @@
 // (follow the plan, waiting whenever the visitor lags behind), WaitVisitor
 // (at the exhibit until the visitor has looked at it and is ready) and
 // FollowVisitor (the visitor wandered off or was lost: keep near it, call
-// it back, then Replan). Inputs are the localizer's pose and the visitor's
-// track (camera only); outputs the path point for Mr. BRIAN, plan requests
-// and the call to the visitor. ROS-free.
+// it back, then Replan) — and the doors closed on the way (re-plan the leg;
+// their walls as obstacle discs for a planner that takes obstacles). Inputs
+// are the localizer's pose and the visitor's track; outputs the path point
+// for Mr. BRIAN, plan requests and the call to the visitor. The one guide of
+// both bringups: the in-process loop (followme_loop.h) and the distributed
+// guide_node drive it. ROS-free.
 #pragma once
 
 #include <optional>
@@ -38,6 +41,19 @@ struct GuideEvent {
   std::string exhibit;  // the tour's current exhibit
 };
 
+/// One disc of a closed door's wall, for a planner that knows obstacles
+/// rather than walls (SPIKE's percepts).
+struct DoorDisc {
+  std::string name;  // <door>_<i>: a planner tracking obstacles by name keeps each
+  Point2D center;
+  double radius = 0.2;
+};
+
+/// The wall of `d` as discs of `radius` every `spacing` m at most, both
+/// ends included (at least two): n = max(2, ceil(length / spacing) + 1)
+/// discs at a + k (b - a), k = i / (n - 1).
+std::vector<DoorDisc> door_discs(const Door& d, double spacing = 0.25, double radius = 0.2);
+
 class Guide {
  public:
   Guide(GuideOptions options, std::vector<Exhibit> tour);
@@ -50,6 +66,11 @@ class Guide {
   void invalidate_plan(double t, const std::string& why);
   /// The tour dialogue: a new tour (the exhibits still to visit, in order).
   void set_tour(std::vector<Exhibit> tour, double t);
+  /// A door closed at `t`: kept in closed_doors(), and the leg being guided
+  /// re-planned (invalidate_plan) `replan_delay` s later, at the first
+  /// update from then (0: at once, for a planner that has the door already;
+  /// a planner told by percepts needs a moment to take them).
+  void close_door(const Door& d, double t, double replan_delay = 0.0);
 
   Job job() const { return job_; }
   const std::vector<Exhibit>& tour() const { return tour_; }
@@ -60,6 +81,7 @@ class Guide {
   bool waiting_for_visitor() const { return waiting_; }
   const std::vector<Point2D>& plan() const { return plan_; }
   const std::vector<GuideEvent>& events() const { return events_; }
+  const std::vector<Door>& closed_doors() const { return closed_; }
 
  private:
   void enter(Job j, double t, const std::string& what);
@@ -79,6 +101,8 @@ class Guide {
   bool requested_ = false, waiting_ = false, looked_ = false, called_ = false, wandering_ = false;
   double look_ = 0.0, still_ = 0.0, last_t_ = 0.0, dt_ = 0.0, called_at_ = 0.0, entered_ = 0.0;
   std::vector<GuideEvent> events_;
+  std::vector<Door> closed_;
+  std::optional<double> replan_at_;  // a door closed: re-plan from then
 };
 
 }  // namespace mrt::followme

@@ -55,12 +55,16 @@ class VisitorTracker {
     return true;
   }
 
+  /// The visitor seen at `p` (map frame) at time t: camera frames through
+  /// update(); a tracker of its own (MAP's track, in the distributed
+  /// bringup) directly.
+  void observe(double t, const Point2D& p);
+
   const std::optional<VisitorTrack>& track() const { return track_; }
   /// Seconds since the visitor was last seen (infinite before the first time).
   double unseen_for(double t) const { return track_ ? t - track_->last_seen : 1e9; }
 
  private:
-  void observe(double t, const Point2D& p);
 
   std::string color_;
   double gate_, window_;

@@ -2,7 +2,7 @@
 // (followme.launch airboard:=false, which lets the simulation run faster
 // than real time; the AIRBoard emulator runs in real time). Integrates the
 // cumulative ticks of wheel_state (mrt_sim's simulated encoders, or any
-// driver's) with the differential odometry of encoder_odometry.h and
+// driver's) with mrt_common's wheel odometry (wheel_odometry.h) and
 // publishes tf <prefix>odom -> <prefix>base_link and odom. The base (wheel
 // radius, track, ticks per revolution) is the world file's robot.
 #include <nav_msgs/Odometry.h>
@@ -13,8 +13,8 @@
 #include <string>
 
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common/wheel_odometry.h"
 #include "mrt_common_ros/params.h"
-#include "mrt_followme/encoder_odometry.h"
 #include "mrt_msgs/WheelState.h"
 #include "mrt_sim/world.h"
 
@@ -29,8 +29,7 @@ class EncoderOdometryNode {
     const mrt::sim::World w = mrt::sim::load_world(world);
     for (const auto& rc : w.robots)
       if (rc.name == robot && rc.sensors.ticks_per_rev > 0)
-        odo_ = std::make_unique<mrt::followme::EncoderOdometry>(rc.base.wheel_radius, rc.base.track,
-                                                                 rc.sensors.ticks_per_rev);
+        odo_ = std::make_unique<mrt::common::WheelOdometry>(rc.base, rc.sensors.ticks_per_rev);
     if (!odo_) throw mrt::ros_common::ParamError("robot", "a robot of ~world with encoders");
     odom_frame_ = robot + "/odom";
     base_frame_ = robot + "/base_link";
@@ -40,12 +39,17 @@ class EncoderOdometryNode {
 
  private:
   void on_state(const mrt_msgs::WheelState& m) {
+    if (m.ticks.size() != odo_->geometry().wheel_count()) {  // malformed: dropped, the node goes on
+      ROS_WARN_THROTTLE(5.0, "wheel_state with %zu ticks for %zu wheels: dropped", m.ticks.size(),
+                        odo_->geometry().wheel_count());
+      return;
+    }
     odo_->update(m.ticks);
     tf_.sendTransform(mrt::ros_common::to_transform(odo_->pose(), odom_frame_, base_frame_, m.header.stamp));
     pub_.publish(mrt::ros_common::to_odometry(odo_->pose(), 0.0, 0.0, 0.0, odom_frame_, base_frame_, m.header.stamp));
   }
 
-  std::unique_ptr<mrt::followme::EncoderOdometry> odo_;
+  std::unique_ptr<mrt::common::WheelOdometry> odo_;
   std::string odom_frame_, base_frame_;
   ros::Publisher pub_;
   ros::Subscriber sub_;

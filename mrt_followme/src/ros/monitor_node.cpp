@@ -5,6 +5,9 @@
 // percept of its colour). When the guide node reports the tour over
 // (tour_result) it publishes the summary (tour_summary, latched) in the
 // format of the in-process followme_node, which ./scripts/demo.sh prints.
+// Percept objects the ontology does not accept are dropped and counted
+// (diagnostics).
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -20,7 +23,9 @@
 
 #include "markers.h"
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common/percept.h"
 #include "mrt_common_ros/params.h"
+#include "mrt_common_ros/percept_conversions.h"
 #include "mrt_msgs/Percept.h"
 
 namespace {
@@ -50,6 +55,8 @@ class Monitor {
     summary_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
     measures_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_measures", 5);
     timer_ = nh.createTimer(ros::Duration(1.0), &Monitor::report, this);
+    diag_.setHardwareID("none");
+    diag_.add("FollowMe monitor", this, &Monitor::diagnose);
   }
 
  private:
@@ -96,11 +103,12 @@ class Monitor {
   void on_percepts(const mrt_msgs::Percept& m) {
     const double t = m.header.stamp.toSec();
     bool seen = false;
-    for (const auto& o : m.objects) {
-      if (o.membership_class != "Person") continue;
-      for (const auto& a : o.attributes)
-        if (a.name == "color" && a.symbol == color_) seen = true;
-    }
+    const std::size_t dropped = drops_.total();
+    for (const auto& o : mrt::ros_common::accepted_objects(m, drops_))
+      seen = seen || (o.membership_class == mrt::common::percept_class::kPerson && o.symbol("color") == color_);
+    if (drops_.total() > dropped)
+      ROS_WARN_THROTTLE(5.0, "followme_monitor: %zu percept objects the ontology does not accept dropped so far",
+                        drops_.total());
     if (first_ < 0) first_ = last_seen_ = t;
     if (seen) last_seen_ = t;
     r_.max_unseen = std::max(r_.max_unseen, t - last_seen_);
@@ -128,9 +136,20 @@ class Monitor {
     std_msgs::String s;
     s.data = buf;
     measures_pub_.publish(s);
+    diag_.update();
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
+    if (drops_.total() > 0)
+      st.summary(diagnostic_msgs::DiagnosticStatus::WARN, "percept objects dropped (not in the ontology)");
+    else
+      st.summary(diagnostic_msgs::DiagnosticStatus::OK, "measuring");
+    mrt::ros_common::report(st, drops_);
   }
 
   std::string color_ = "purple";
+  mrt::common::PerceptDrops drops_;
+  diagnostic_updater::Updater diag_;
   double robot_radius_ = 0.25, person_radius_ = 0.25, first_ = -1.0, last_seen_ = 0.0;
   std::optional<Pose2D> truth_;
   std::deque<std::pair<double, Pose2D>> history_;  // the last 2 s of ground truth

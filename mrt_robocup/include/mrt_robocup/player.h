@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mrt_airboard/brian_mapping.h"
+#include "mrt_common/brian_mapping.h"
 #include "mrt_brian/brian.h"
 #include "mrt_robocup/situation.h"
 
@@ -88,7 +88,7 @@ class Player {
  private:
   PlayerOptions o_;
   std::unique_ptr<brian::Brian> brian_;
-  airboard::BrianMapping mapping_;
+  common::BrianMapping mapping_;
   SituationAssessor assessor_;
   double last_kick_ = -1e9;
   Parameters held_;          // the last coordination with a job
@@ -97,6 +97,6 @@ class Player {
 
 /// "differential"/"omni" -> the mapping of that kinematics' rule base;
 /// throws std::invalid_argument otherwise.
-airboard::BrianMappingParams mapping_for(const std::string& kinematics);
+common::BrianMappingParams mapping_for(const std::string& kinematics);
 
 }  // namespace mrt::robocup

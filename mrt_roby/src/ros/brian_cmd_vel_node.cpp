@@ -1,6 +1,7 @@
 // brian_cmd_vel_node: Mr. BRIAN's commands as a body twist on cmd_vel, for
 // running without the AIRBoard (rostests, a base driven by twist), through
-// the AIRBoard's own Mr. BRIAN mapping (unicycle: Speed cm/s, Jog deg/s).
+// the one Mr. BRIAN mapping (mrt_common/brian_mapping.h, the AIRBoard
+// driver's too; unicycle: Speed cm/s, Jog deg/s).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Twist.h>
 #include <mrt_msgs/CommandArray.h>
@@ -11,14 +12,14 @@
 #include <utility>
 #include <vector>
 
-#include "mrt_airboard/brian_mapping.h"
+#include "mrt_common/brian_mapping.h"
 #include "mrt_common_ros/params.h"
 
 namespace {
 
 class CmdVelNode {
  public:
-  CmdVelNode(ros::NodeHandle& nh, mrt::airboard::BrianMappingParams p) : mapping_(std::move(p)) {
+  CmdVelNode(ros::NodeHandle& nh, mrt::common::BrianMappingParams p) : mapping_(std::move(p)) {
     pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     sub_ = nh.subscribe("commands", 10, &CmdVelNode::on_commands, this);
     diag_.setHardwareID("none");
@@ -56,7 +57,7 @@ class CmdVelNode {
     st.add("last command age (s)", age);
   }
 
-  mrt::airboard::BrianMapping mapping_;
+  mrt::common::BrianMapping mapping_;
   diagnostic_updater::Updater diag_;
   ros::Timer diag_timer_;
   ros::Time last_;
@@ -73,7 +74,7 @@ int main(int argc, char** argv) {
   return mrt::ros_common::run_node([] {
     ros::NodeHandle nh, pnh("~");
     mrt::ros_common::ParamReader p(pnh);
-    mrt::airboard::BrianMappingParams m;  // unicycle: Speed, Jog, cm/s and deg/s to SI
+    mrt::common::BrianMappingParams m;  // unicycle: Speed, Jog, cm/s and deg/s to SI
     p.get("speed", m.speed_name)
         .get("jog", m.rotation_name)
         .get("speed_scale", m.speed_scale)

@@ -1,10 +1,11 @@
+// Mr. BRIAN's commands as a twist (brian_mapping.h; formerly mrt_airboard's).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "mrt_airboard/brian_mapping.h"
+#include "mrt_common/brian_mapping.h"
 
-using namespace mrt::airboard;
+using namespace mrt::common;
 
 TEST(BrianMapping, PolarForOmniBases) {
   BrianMapping m(BrianMappingParams::for_base(BaseType::kOmni));
