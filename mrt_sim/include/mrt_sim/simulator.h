@@ -61,7 +61,7 @@ class Simulator {
   double dt() const { return dt_; }
   const World& world() const { return world_; }
   /// The ball and the movers, for step hooks (step_hook.h) and other code
-  /// that moves them from outside (kicks, placements, scripted actors).
+  /// that moves them from outside (pushes, placements, scripted actors).
   Ball& ball() { return world_.ball; }
   std::vector<Mover>& movers() { return world_.movers; }
   std::vector<RobotState>& robots() { return robots_; }

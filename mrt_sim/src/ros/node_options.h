@@ -15,7 +15,7 @@ namespace mrt::sim::node {
 /// One entry of ~plugins: a sim_node plugin (mrt_sim/ros/sim_plugin.h).
 struct PluginSpec {
   std::string name;  // its parameter namespace ~<name>/ ([A-Za-z0-9_], unique)
-  std::string type;  // its pluginlib class ("mrt_robocup/MatchPlugin")
+  std::string type;  // its pluginlib class ("PACKAGE/CLASS", derived from mrt::sim::SimPlugin)
 };
 
 struct NodeOptions {

@@ -1,7 +1,7 @@
 // The plugin interface of sim_node (pluginlib, base class
 // "mrt::sim::SimPlugin" of package mrt_sim): code that extends the
 // simulation without sim_node knowing it, e.g. a game's rules with their
-// topics (mrt_robocup/MatchPlugin). sim_node loads the plugins named in its
+// topics. sim_node loads the plugins named in its
 // ~plugins parameter ([{name: N, type: PACKAGE/CLASS}, ...]), in that
 // order, and calls, for each:
 //
@@ -37,7 +37,7 @@ namespace mrt::sim {
 struct SimPluginContext {
   std::string name;          // the plugin's `name` in ~plugins
   std::string type;          // its `type` (the pluginlib class name)
-  ros::NodeHandle nh;        // sim_node's namespace: topics beside the robots' (`referee`, `<robot>/kick`)
+  ros::NodeHandle nh;        // sim_node's namespace: topics beside the robots' (`<robot>/...`)
   ros::NodeHandle pnh;       // the plugin's parameters: sim_node's ~<name>/
   std::string world_frame;   // sim_node's ~world_frame (frame of everything in the world)
 };
