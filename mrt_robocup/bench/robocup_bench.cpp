@@ -1,13 +1,13 @@
 // robocup_bench: the team session's simulated-to-CPU time ratio (the
 // real-time factor), four robots, 60 simulated s per seed, three seeds;
 // prints `name: value unit` lines (scripts/bench.sh). The baseline in the
-// same run is mrt_sim's match alone (no MAP, SCARE or players), so that
+// same run is the match alone (no MAP, SCARE or players), so that
 // the ratio between the two is stable on a shared machine.
 #include <chrono>
 #include <cstdio>
 
+#include "mrt_robocup/match.h"
 #include "mrt_robocup/session_files.h"
-#include "mrt_sim/match.h"
 #include "mrt_sim/simulator.h"
 
 namespace {
@@ -24,7 +24,7 @@ int main() {
   double team_cpu = 0.0, team_sim = 0.0;
   int goals = 0;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
+    TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR);
     o.seed = seed;
     o.duration = sim_seconds;
     TeamSession s(o);
@@ -35,12 +35,12 @@ int main() {
     goals += s.stats().score[0];
   }
   // Baseline: the same match and world with the robots standing still.
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR);
   mrt::sim::World w = mrt::sim::load_world(o.world);
-  mrt::sim::MatchConfig mc = mrt::sim::load_match_config(o.match);
-  mrt::sim::setup_match_world(mc, w);
+  MatchConfig mc = load_match_config(o.match);
+  setup_match_world(mc, w);
   mrt::sim::Simulator sim(std::move(w), o.dt);
-  mrt::sim::Match match(mc, sim);
+  Match match(mc, sim);
   const auto t0 = std::chrono::steady_clock::now();
   while (sim.time() < sim_seconds) match.step();
   const double base_cpu = seconds_since(t0);

@@ -7,11 +7,10 @@
 
 namespace mrt::robocup {
 
-TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds,
-                                           const std::string& sim_worlds) {
+TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds) {
   TeamSessionOptions o;
   o.world = worlds + "/msl_field.yaml";
-  o.match = sim_worlds + "/msl_match.yaml";
+  o.match = package_root + "/config/msl_match.yaml";
   o.team = package_root + "/config/team.yaml";
   o.rule_bases = package_root + "/config/brian";
   o.activities = package_root + "/config/scare/robocup_team.yaml";

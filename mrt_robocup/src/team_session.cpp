@@ -6,9 +6,10 @@
 #include <stdexcept>
 
 #include "mrt_map/world_model.h"
+#include "mrt_robocup/match.h"
+#include "mrt_robocup/team_crisp.h"
 #include "mrt_robocup/team_percepts.h"
 #include "mrt_scare/coordinator.h"
-#include "mrt_sim/match.h"
 #include "mrt_sim/sensors.h"
 #include "mrt_sim/simulator.h"
 
@@ -31,7 +32,7 @@ struct TeamSession::Impl {
   TeamSessionOptions o;
   map::ConceptualModel model;
   std::unique_ptr<sim::Simulator> sim;
-  std::unique_ptr<sim::Match> match;
+  std::unique_ptr<Match> match;
   std::vector<Member> team;
   std::vector<scare::CoordinationMessage> leaving;  // delivered at the next cycle
   Referee referee = Referee::kNone;
@@ -44,7 +45,7 @@ struct TeamSession::Impl {
   explicit Impl(const TeamSessionOptions& opt) : o(opt), model(map::ConceptualModel::load(opt.map_model)), rng(opt.seed) {
     if (!(o.rate > 0.0) || !(o.dt > 0.0) || o.dt * o.rate > 1.0) throw std::invalid_argument("rate and dt: expected 0 < dt <= 1 / rate");
     sim::World w = sim::load_world(o.world);
-    sim::MatchConfig mc = sim::load_match_config(o.match);
+    MatchConfig mc = load_match_config(o.match);
     if (o.replace_opponents) mc.opponents = o.opponents;
     w.seed = o.seed;
     w.robots.clear();
@@ -59,9 +60,9 @@ struct TeamSession::Impl {
       rc.sensors.rate_dgps = 0.0;
       w.robots.push_back(rc);
     }
-    sim::setup_match_world(mc, w);
+    setup_match_world(mc, w);
     sim = std::make_unique<sim::Simulator>(std::move(w), o.dt);
-    match = std::make_unique<sim::Match>(mc, *sim);
+    match = std::make_unique<Match>(mc, *sim);  // a step hook of sim from now on
     const scare::ActivitySet set = scare::load_activities(o.activities);
     for (std::size_t i = 0; i < robots.size(); ++i) {
       Member m;
@@ -99,9 +100,9 @@ struct TeamSession::Impl {
     std::fill(kick_request.begin(), kick_request.end(), -1.0);
   }
 
-  void on_event(const sim::RefereeEvent& e) {
+  void on_event(const RefereeEvent& e) {
     referee = static_cast<Referee>(static_cast<int>(e.command));
-    if (e.command == sim::RefereeCommand::kGoal) {
+    if (e.command == RefereeCommand::kGoal) {
       stats.score = e.score;
       if (e.team == 0 && stats.first_goal_time < 0.0) stats.first_goal_time = e.time;
       pass_from = -1;
@@ -206,14 +207,14 @@ bool TeamSession::cycle() {
   const long steps = std::max(1L, std::lround(1.0 / (s.o.rate * s.o.dt)));
   for (long k = 0; k < steps; ++k) {
     const int kicks_before = s.match->kicks();
-    for (const sim::RefereeEvent& e : s.match->step()) s.on_event(e);
+    for (const RefereeEvent& e : s.match->step()) s.on_event(e);
     if (s.match->kicks() > kicks_before) {
       // The kick of this cycle's requester that reached the ball.
       for (std::size_t i = 0; i < s.team.size(); ++i)
         if (s.kick_request[i] >= 0.0) s.pass_from = static_cast<int>(i);
     }
     std::fill(s.kick_request.begin(), s.kick_request.end(), -1.0);
-    const bool playing = s.match->state() == sim::Match::State::kPlaying;
+    const bool playing = s.match->state() == Match::State::kPlaying;
     if (playing) {
       s.stats.play_time += s.o.dt;
       if (s.match->last_touch() == 0) s.step_touch_team0 += s.o.dt;
@@ -244,7 +245,7 @@ void TeamSession::run() {
 void TeamSession::referee(Referee command) {
   Impl& s = *impl_;
   if (command == Referee::kNone) return;
-  s.match->command(static_cast<sim::RefereeCommand>(static_cast<int>(command)));
+  s.match->command(static_cast<RefereeCommand>(static_cast<int>(command)));
   s.referee = command;
   if (!Player::playing(command, false)) s.halt_all();
 }

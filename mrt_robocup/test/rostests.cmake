@@ -1,9 +1,9 @@
 # The RoboCup team's rostests (issue 21), included by mrt_robocup's
-# CMakeLists.txt (include(test/rostests.cmake OPTIONAL)) inside or outside
-# its if(CATKIN_ENABLE_TESTING). Each runs the whole team
+# CMakeLists.txt (include(test/rostests.cmake OPTIONAL)) after its
+# if(CATKIN_ENABLE_TESTING) block, which finds rostest. Each runs the whole team
 # (launch/robocup.launch, ideal vision, no rviz): README "Tests".
 if(CATKIN_ENABLE_TESTING)
-  find_package(rostest REQUIRED)
+  # rostest: found by CMakeLists.txt (the match plugin's rostest).
   # The package's catkin components (roscpp, mrt_msgs, nav_msgs, std_msgs,
   # mrt_common_ros) cover the tests; xmlrpcpp comes with roscpp.
   foreach(t stop removal score)
@@ -56,7 +56,7 @@ foreach(n pose_odometry_node scare_world_node team_markers_node)
   add_dependencies(${n} ${catkin_EXPORTED_TARGETS})
   target_link_libraries(${n} ${catkin_LIBRARIES})
   if(n STREQUAL scare_world_node)
-    target_link_libraries(${n} ${PROJECT_NAME}_session)
+    target_link_libraries(${n} ${PROJECT_NAME}_core)  # team_crisp(), without the simulator
   endif()
   install(TARGETS ${n} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()

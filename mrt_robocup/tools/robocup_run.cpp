@@ -15,7 +15,7 @@ using namespace mrt::robocup;
 // The tests' opponents: a goalkeeper at (8.4, 0) and a static defender at (5, 0).
 void use_keeper_and_static(TeamSessionOptions& o) {
   o.replace_opponents = true;
-  mrt::sim::OpponentConfig keeper, back;
+  OpponentConfig keeper, back;
   keeper.name = "opp_keeper";
   keeper.role = "goalkeeper";
   keeper.home = {8.4, 0.0};
@@ -49,10 +49,10 @@ void print_trace(const TeamSession& s, int trace_robot) {
 
 int main(int argc, char** argv) {
   using namespace mrt::robocup;
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
-  CLI::App app{"Runs the Milan RoboCup team (4 robots: MAP, SCARE, Mr. BRIAN) in mrt_sim's match"};
-  app.add_option("--world", o.world, "mrt_sim world (the field), or a match file (then the field beside it)");
-  app.add_option("--match", o.match, "mrt_sim match file");
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR);
+  CLI::App app{"Runs the Milan RoboCup team (4 robots: MAP, SCARE, Mr. BRIAN) in the simulated match"};
+  app.add_option("--world", o.world, "mrt_sim world (the field), or a match file (then that match on the MSL field)");
+  app.add_option("--match", o.match, "match file (default: the package's config/msl_match.yaml)");
   app.add_option("--team", o.team, "team file (robots, bases, kick-off poses)");
   app.add_option("--brian", o.rule_bases, "rule-base directory (differential/, omni/)");
   app.add_option("--activities", o.activities, "SCARE activity file");

@@ -2,7 +2,8 @@
 // parameters once, loads the world, then steps the core Simulator at
 // ~rate_hz simulated steps per second, paced on wall time by
 // ~real_time_factor, and publishes /clock, ground truth, the simulated
-// devices of every robot and rviz markers, all stamped with sim time.
+// devices of every robot and rviz markers, all stamped with sim time. The
+// plugins of ~plugins (mrt_sim/ros/sim_plugin.h) extend it; it knows none.
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -25,9 +26,9 @@
 #include "mrt_sim/world.h"
 #include "ros/conversions.h"
 #include "ros/markers.h"
-#include "ros/match_interface.h"
 #include "ros/node_options.h"
 #include "ros/robot_interface.h"
+#include "ros/sim_plugins.h"
 
 namespace mrt::sim::node {
 namespace {
@@ -40,15 +41,10 @@ double seconds_between(SteadyClock::time_point a, SteadyClock::time_point b) {
 
 class SimNode {
  public:
-  SimNode(ros::NodeHandle& nh, NodeOptions opt, World world, const MatchConfig* match)
-      : opt_(std::move(opt)), sim_(std::move(world), opt_.dt()), updater_(nh, ros::NodeHandle("~")) {
-    if (match) {  // the world was prepared by setup_match_world
-      MatchConfig cfg = *match;
-      cfg.kicker.dribble_timeout = opt_.dribble_timeout;
-      match_ = std::make_unique<Match>(cfg, sim_);
-      match_if_ = std::make_unique<MatchInterface>(nh, *match_, opt_.world_frame);
-      updater_.add("match", [this](diagnostic_updater::DiagnosticStatusWrapper& s) { match_if_->diagnose(s); });
-    }
+  SimNode(ros::NodeHandle& nh, NodeOptions opt, World world, SimPlugins plugins)
+      : opt_(std::move(opt)), sim_(std::move(world), opt_.dt()), plugins_(std::move(plugins)),
+        updater_(nh, ros::NodeHandle("~")) {
+    plugins_.start(sim_, updater_);  // the world was prepared by their configure()
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
     world_markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
     dynamic_markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
@@ -95,11 +91,11 @@ class SimNode {
     while (ros::ok()) {
       ros::spinOnce();  // commands received now act during the next step
       for (auto& r : robots_) r->apply_watchdog();
-      if (match_if_) match_if_->step();  // the match steps the simulator
-      else sim_.step();
+      sim_.step();  // runs the plugins' step hooks
       ++steps_;
       const ros::Time stamp(sim_.time());
       if (ros::Time::isSimTime()) ros::Time::setNow(stamp);  // our own clock, without a round trip
+      plugins_.after_step(stamp);
 
       if (opt_.publish_clock && steps_ % opt_.clock_divider == 0) {
         rosgraph_msgs::Clock c;
@@ -110,7 +106,7 @@ class SimNode {
       const bool path = steps_ % path_every_ == 0;
       tfs.clear();
       for (auto& r : robots_) r->publish(stamp, gt, path, tfs);
-      if (gt && match_if_) match_if_->publish_ball(stamp);
+      if (gt) plugins_.publish_ground_truth(stamp);
       if (gt) publish_movers(stamp);
       if (!tfs.empty()) tf_.sendTransform(tfs);
       if (steps_ % marker_every_ == 0 && dynamic_markers_pub_.getNumSubscribers() > 0)
@@ -168,8 +164,7 @@ class SimNode {
 
   NodeOptions opt_;
   Simulator sim_;
-  std::unique_ptr<Match> match_;
-  std::unique_ptr<MatchInterface> match_if_;
+  SimPlugins plugins_;  // after sim_: destroyed before it (their hooks detach from it)
   std::vector<std::unique_ptr<RobotInterface>> robots_;
   std::vector<ros::Subscriber> mover_goal_subs_;
   std::vector<ros::Publisher> mover_truth_pubs_;
@@ -192,17 +187,16 @@ int main(int argc, char** argv) {
   // A bad parameter: ParamError, ROS_FATAL and exit 1 (run_node); a world
   // file that does not load: exit 2.
   return mrt::ros_common::run_node([]() -> int {
-    ros::NodeHandle nh;
-    const NodeOptions opt = load_node_options(ros::NodeHandle("~"));
+    ros::NodeHandle nh, pnh("~");
+    const NodeOptions opt = load_node_options(pnh);
     mrt::sim::World world;
-    std::unique_ptr<mrt::sim::MatchConfig> match;
+    SimPlugins plugins;
     try {
       world = mrt::sim::load_world(opt.world_file);
       apply_team_options(opt, world);  // ~robots, ~camera_rate, ~seed
-      if (!opt.match_file.empty()) {
-        match = std::make_unique<mrt::sim::MatchConfig>(mrt::sim::load_match_config(opt.match_file));
-        mrt::sim::setup_match_world(*match, world);
-      }
+      plugins = SimPlugins(opt.plugins, nh, pnh, opt.world_frame, world);  // they may change the world
+    } catch (const mrt::ros_common::ParamError&) {
+      throw;  // a bad parameter of sim_node or of a plugin: exit 1 (run_node)
     } catch (const mrt::common::ParseError& e) {
       ROS_FATAL("cannot load world: %s", e.what());
       return 2;
@@ -217,7 +211,7 @@ int main(int argc, char** argv) {
       ROS_WARN("/use_sim_time is not set: other nodes will not follow the simulated /clock");
     std::unique_ptr<SimNode> node;
     try {
-      node = std::make_unique<SimNode>(nh, opt, std::move(world), match.get());
+      node = std::make_unique<SimNode>(nh, opt, std::move(world), std::move(plugins));
     } catch (const std::exception& e) {
       throw std::runtime_error("cannot start the simulation of " + opt.world_file + ": " + e.what());
     }

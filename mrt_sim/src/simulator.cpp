@@ -144,7 +144,16 @@ bool Simulator::blocked(std::size_t i, const Pose2D& from, const Pose2D& to) con
   return box(p, ball.radius) < -tol;
 }
 
+void Simulator::add_hook(StepHook& hook) {
+  if (std::find(hooks_.list.begin(), hooks_.list.end(), &hook) == hooks_.list.end()) hooks_.list.push_back(&hook);
+}
+
+void Simulator::remove_hook(StepHook& hook) {
+  hooks_.list.erase(std::remove(hooks_.list.begin(), hooks_.list.end(), &hook), hooks_.list.end());
+}
+
 void Simulator::step() {
+  for (StepHook* h : hooks_.list) h->before_step(*this);
   ++steps_;
   time_ = static_cast<double>(steps_) * dt_;
 
@@ -181,6 +190,7 @@ void Simulator::step() {
   move_movers();
   move_ball();
   for (std::size_t i = 0; i < robots_.size(); ++i) update_sensors(i);
+  for (StepHook* h : hooks_.list) h->after_step(*this);
 }
 
 std::size_t Simulator::mover_index(const std::string& name) const {

@@ -10,11 +10,10 @@
 
 namespace mrt::robocup {
 
-/// Options with the package's defaults under `package_root` (config/...),
-/// the field of mrt_world's worlds under `worlds` (msl_field.yaml) and the
-/// match file under `sim_worlds` (msl_match.yaml).
-TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds,
-                                           const std::string& sim_worlds);
+/// Options with the package's defaults under `package_root` (config/...,
+/// the match config/msl_match.yaml among them) and the field of mrt_world's
+/// worlds under `worlds` (msl_field.yaml).
+TeamSessionOptions default_session_options(const std::string& package_root, const std::string& worlds);
 
 /// If `o.world` is a match file (it has `opponents` or `referee` and no
 /// `robots`), it becomes o.match and the world `field_world`. Throws

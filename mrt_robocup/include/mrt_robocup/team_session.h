@@ -1,5 +1,5 @@
 // The Milan RoboCup team in one process, without ROS (like mrt_followme's
-// FollowMeSession): mrt_sim's Match with N robots; per robot and per cycle
+// FollowMeSession): the Match (match.h) on mrt_sim's simulator with N robots; per robot and per cycle
 // the ideal camera percepts (seeded noise) -> its own MAP WorldModel
 // (fusing its teammates' anchors) -> its SCARE Coordinator (exchanging
 // messages with the others') -> its Player (Mr. BRIAN) -> wheel set-points,
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "mrt_robocup/player.h"
-#include "mrt_sim/match.h"
+#include "mrt_robocup/match.h"
 
 namespace mrt::robocup {
 
@@ -29,7 +29,7 @@ std::vector<TeamRobot> load_team(const std::string& path);
 
 struct TeamSessionOptions {
   std::string world;                // mrt_sim world (the field; its robots are replaced)
-  std::string match;                // mrt_sim match file
+  std::string match;                // match file (doc/match.md)
   std::string team;                 // config/team.yaml
   std::string rule_bases;           // config/brian (differential/, omni/ below)
   std::string activities;           // config/scare/robocup_team.yaml
@@ -42,7 +42,7 @@ struct TeamSessionOptions {
   double distance_noise = 0.02;     // fraction of the distance, 1 sigma
   double bearing_noise = 0.01;      // rad, 1 sigma
   bool replace_opponents = false;   // use `opponents` instead of the match file's
-  std::vector<sim::OpponentConfig> opponents;
+  std::vector<OpponentConfig> opponents;
   bool stop_at_first_goal = false;
 };
 

@@ -2,7 +2,7 @@
 // the distributed team (robot.launch). The activity file
 // (config/scare/robocup_team.yaml) reads BallX, BallY, BallSeen, BallOwned,
 // ShotClear, Threat, ReceiveX, ReceiveY; the in-process team session computes
-// them with team_crisp() (team_percepts.h), and this node does the same on
+// them with team_crisp() (team_crisp.h), and this node does the same on
 // `world_model` (mrt_msgs/WorldModel), publishing `world_crisp`
 // (mrt_msgs/CrispDataArray) for scare_coordinator at every model. BallOwned:
 // the ball within ~own_reach of the robot's own pose or of a Teammate
@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "mrt_common_ros/params.h"
-#include "mrt_robocup/team_percepts.h"
+#include "mrt_robocup/team_crisp.h"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "scare_world");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mrt_sim/sensors.h"
+#include "mrt_sim/step_hook.h"
 #include "mrt_sim/world.h"
 
 namespace mrt::sim {
@@ -59,8 +60,8 @@ class Simulator {
   std::uint64_t steps() const { return steps_; }
   double dt() const { return dt_; }
   const World& world() const { return world_; }
-  /// The ball and the movers, for the match layer (match.h) that kicks,
-  /// dribbles, places the ball and steers scripted opponents.
+  /// The ball and the movers, for step hooks (step_hook.h) and other code
+  /// that moves them from outside (pushes, placements, scripted actors).
   Ball& ball() { return world_.ball; }
   std::vector<Mover>& movers() { return world_.movers; }
   std::vector<RobotState>& robots() { return robots_; }
@@ -85,14 +86,26 @@ class Simulator {
   /// vision from the next step on.
   void add_wall(const Segment& wall);
 
-  /// Advances the world by one step: moves robots along exact constant-twist
-  /// arcs (wheel speeds saturated preserving direction), stops a robot whose
+  /// Registers `hook` (not owned: it must stay alive until removed, or
+  /// until the simulator goes): every step() calls the hooks' before_step
+  /// before its physics and their after_step after it, each in the order
+  /// they were added. Adding a registered hook again does nothing; a copy of
+  /// the simulator starts without hooks. Not from within a hook.
+  void add_hook(StepHook& hook);
+  /// Unregisters `hook` (nothing if it is not registered). Not from within
+  /// a hook.
+  void remove_hook(StepHook& hook);
+
+  /// Advances the world by one step: calls the hooks' before_step, moves
+  /// robots along exact constant-twist arcs (wheel speeds saturated
+  /// preserving direction), stops a robot whose
   /// step would collide (its footprint would overlap a wall, goal wall, post,
   /// mover, other robot, the bounds or a ball pinned against one of those,
   /// and is not moving out of an existing overlap; its wheels slip, so
   /// encoders count and the mice do not), moves
   /// movers (a mover waits rather than walk into a robot) and the ball, then
-  /// updates every sensor whose period has elapsed.
+  /// updates every sensor whose period has elapsed, then calls the hooks'
+  /// after_step.
   void step();
 
   /// The robots other than `robot`, as its sensors see them (name,
@@ -118,6 +131,15 @@ class Simulator {
   std::vector<std::vector<bool>> mice_fault_;  // a fault since the last sample
   std::vector<Segment> solid_;                 // walls and goal walls
   std::mt19937_64 rng_;
+  // The registered hooks (not owned). A copy starts without any: a hook
+  // belongs to the simulator it was added to.
+  struct Hooks {
+    std::vector<StepHook*> list;
+    Hooks() = default;
+    Hooks(const Hooks&) {}
+    Hooks& operator=(const Hooks&) { return *this; }
+  };
+  Hooks hooks_;
 };
 
 }  // namespace mrt::sim

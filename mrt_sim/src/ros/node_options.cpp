@@ -18,6 +18,34 @@ bool valid_frame_name(const std::string& s) {
   return true;
 }
 
+bool valid_plugin_name(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+}
+
+// ~plugins: a list of {name: N, type: PACKAGE/CLASS} (as costmap_2d's
+// layers), names unique; absent = none.
+std::vector<PluginSpec> load_plugins(const ros::NodeHandle& pnh) {
+  std::vector<PluginSpec> out;
+  XmlRpc::XmlRpcValue v;
+  if (!pnh.getParam("plugins", v)) return out;
+  const std::string form = "a list of {name: NAME, type: PACKAGE/CLASS}, names of [A-Za-z0-9_] and unique";
+  ParamReader::check(v.getType() == XmlRpc::XmlRpcValue::TypeArray, "plugins", form);
+  for (int i = 0; i < v.size(); ++i) {
+    XmlRpc::XmlRpcValue& e = v[i];
+    const bool ok = e.getType() == XmlRpc::XmlRpcValue::TypeStruct && e.size() == 2 && e.hasMember("name") &&
+                    e.hasMember("type") && e["name"].getType() == XmlRpc::XmlRpcValue::TypeString &&
+                    e["type"].getType() == XmlRpc::XmlRpcValue::TypeString;
+    ParamReader::check(ok, "plugins", form);
+    PluginSpec p{static_cast<std::string>(e["name"]), static_cast<std::string>(e["type"])};
+    const bool unique = std::none_of(out.begin(), out.end(), [&](const PluginSpec& q) { return q.name == p.name; });
+    ParamReader::check(valid_plugin_name(p.name) && unique && !p.type.empty(), "plugins", form);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 }  // namespace
 
 long NodeOptions::steps_per(double rate) const {
@@ -38,7 +66,7 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
   ParamReader p(pnh);
   p.require("world", o.world_file, "the path of the world YAML file");
   ParamReader::check(!o.world_file.empty(), "world", "the path of the world YAML file (required)");
-  p.get("match", o.match_file);
+  o.plugins = load_plugins(pnh);
   p.get_positive("rate_hz", o.rate_hz);
   ParamReader::check(o.rate_hz <= 100000.0, "rate_hz", "a number <= 100000");
   p.get_positive("real_time_factor", o.real_time_factor)
@@ -51,7 +79,6 @@ NodeOptions load_node_options(const ros::NodeHandle& pnh) {
       .get_positive("path_rate", o.path_rate)
       .get_non_negative("path_length", o.path_length)
       .get_non_negative("cmd_timeout", o.cmd_timeout)  // 0 disables the watchdog
-      .get_non_negative("dribble_timeout", o.dribble_timeout)  // 0: the ball handler stays on until told
       .get("world_frame", o.world_frame)
       .get("frame_prefix", o.frame_prefix)
       .get("sensor_parent", o.sensor_parent)

@@ -12,9 +12,15 @@
 
 namespace mrt::sim::node {
 
+/// One entry of ~plugins: a sim_node plugin (mrt_sim/ros/sim_plugin.h).
+struct PluginSpec {
+  std::string name;  // its parameter namespace ~<name>/ ([A-Za-z0-9_], unique)
+  std::string type;  // its pluginlib class ("PACKAGE/CLASS", derived from mrt::sim::SimPlugin)
+};
+
 struct NodeOptions {
   std::string world_file;              // ~world (required)
-  std::string match_file;              // ~match: match file (doc/match.md), "" = none
+  std::vector<PluginSpec> plugins;     // ~plugins: [{name: N, type: PACKAGE/CLASS}, ...], in load order
   double rate_hz = 1000.0;             // ~rate_hz: physics steps per simulated second
   double real_time_factor = 1.0;       // ~real_time_factor: sim seconds per wall second
   bool publish_clock = true;           // ~publish_clock
@@ -24,7 +30,6 @@ struct NodeOptions {
   double path_rate = 10.0;             // ~path_rate: Hz of ground_truth_path updates
   int path_length = 1000;              // ~path_length: poses kept in the trail
   double cmd_timeout = 0.5;            // ~cmd_timeout: sim seconds; 0 disables the watchdog
-  double dribble_timeout = 0.5;        // ~dribble_timeout: sim seconds a `dribble` true holds; 0: until false
   std::string world_frame = "world";   // ~world_frame
   std::string frame_prefix;            // ~frame_prefix: prepended to every robot frame
   std::string sensor_parent = "base_link_truth";  // ~sensor_parent: parent of sensor frames

@@ -1,5 +1,6 @@
-// Tests of the match layer (match.h): ball physics, kicker, ball handling,
-// referee (goal, throw-in, restarts), scripted goalkeeper and defender.
+// Tests of the match (match.h, a step hook of mrt_sim's Simulator): ball
+// physics, kicker, ball handling, referee (goal, throw-in, restarts),
+// scripted goalkeeper and defender.
 // Every expected number is worked out by hand in the comment next to it.
 #include <gtest/gtest.h>
 
@@ -8,10 +9,17 @@
 #include <vector>
 
 #include "mrt_common/parse_error.h"
-#include "mrt_sim/match.h"
+#include "mrt_robocup/match.h"
 
-namespace mrt::sim {
+namespace mrt::robocup {
 namespace {
+
+using common::Point2D;
+using sim::Mover;
+using sim::parse_world;
+using sim::RobotState;
+using sim::Simulator;
+using sim::World;
 
 // A 18 x 12 m MSL field inside 20 x 14 m walls; the yellow goal (team 1
 // defends it) at +x, the blue one (team 0, the world's robots) at -x; one
@@ -368,4 +376,4 @@ TEST(Match, CommandNamesAndMatchFile) {
 }
 
 }  // namespace
-}  // namespace mrt::sim
+}  // namespace mrt::robocup

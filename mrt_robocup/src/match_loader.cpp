@@ -7,9 +7,9 @@
 #include "mrt_common/angle.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common/yaml_reader.h"
-#include "mrt_sim/match.h"
+#include "mrt_robocup/match.h"
 
-namespace mrt::sim {
+namespace mrt::robocup {
 
 namespace {
 
@@ -106,4 +106,4 @@ MatchConfig load_match_config(const std::string& path) {
   return parse_match_config(ss.str(), path);
 }
 
-}  // namespace mrt::sim
+}  // namespace mrt::robocup

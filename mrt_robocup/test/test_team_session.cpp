@@ -1,4 +1,4 @@
-// The team session on mrt_sim's match (README "Team session"): the fast
+// The team session on the match (README "Team session"): the fast
 // versions of the team's rostests. Kick-off against a goalkeeper and a
 // static defender: a goal within 120 simulated s in at least 4 of 5 seeds;
 // the referee's stop halts every robot at once; a robot taken out has its
@@ -8,23 +8,23 @@
 #include <cmath>
 #include <string>
 
+#include "mrt_robocup/match.h"
 #include "mrt_robocup/session_files.h"
-#include "mrt_sim/match.h"
 
 namespace mrt::robocup {
 namespace {
 
 TeamSessionOptions options(std::uint64_t seed) {
-  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR, MRT_SIM_WORLDS);
+  TeamSessionOptions o = default_session_options(MRT_ROBOCUP_ROOT, MRT_WORLDS_DIR);
   o.seed = seed;
   o.duration = 120.0;
   o.replace_opponents = true;
-  sim::OpponentConfig keeper;
+  OpponentConfig keeper;
   keeper.name = "opp_keeper";
   keeper.role = "goalkeeper";
   keeper.home = {8.4, 0.0};
   keeper.speed = 1.5;
-  sim::OpponentConfig defender;
+  OpponentConfig defender;
   defender.name = "opp_back";
   defender.role = "static";
   defender.home = {5.0, 0.0};

@@ -33,7 +33,7 @@ TEST(RobocupRun, HelpAndUsageErrors) {
 
 TEST(RobocupRun, MatchFileAsWorld) {
   std::string out;
-  ASSERT_EQ(run(std::string("--world ") + MRT_SIM_WORLDS + "/msl_match.yaml --seed 1 --duration 3", &out), 0) << out;
+  ASSERT_EQ(run(std::string("--world ") + MRT_ROBOCUP_CONFIG + "/msl_match.yaml --seed 1 --duration 3", &out), 0) << out;
   EXPECT_NE(out.find("score: "), std::string::npos) << out;
   EXPECT_NE(out.find("simulated: 3.0 s"), std::string::npos) << out;
   EXPECT_NE(out.find("role_changes_per_minute: "), std::string::npos) << out;

@@ -1,7 +1,8 @@
-// The ROS interface of the match simulation (match.h): the referee's
-// commands on `referee`, the operator's on `referee/operator`, each
-// robot's kicker (`<robot>/kick`) and ball handler (`<robot>/dribble`),
-// and the ball's ground truth (`ball/ground_truth`).
+// The ROS interface of the match simulation (match.h), for the match
+// plugin of sim_node (match_plugin.cpp): the referee's commands on
+// `referee`, the operator's on `referee/operator`, each robot's kicker
+// (`<robot>/kick`) and ball handler (`<robot>/dribble`), and the ball's
+// ground truth (`ball/ground_truth`).
 #pragma once
 
 #include <memory>
@@ -14,9 +15,9 @@
 #include <std_msgs/Bool.h>
 #include <std_msgs/Float64.h>
 
-#include "mrt_sim/match.h"
+#include "mrt_robocup/match.h"
 
-namespace mrt::sim::node {
+namespace mrt::robocup::node {
 
 /// The message of a referee event; `frame` is the world frame.
 mrt_msgs::RefereeCommand to_msg(const RefereeEvent& e, const MatchConfig& cfg, const std::string& frame,
@@ -26,9 +27,9 @@ class MatchInterface {
  public:
   MatchInterface(ros::NodeHandle& nh, Match& match, std::string world_frame);
 
-  /// One match step (instead of Simulator::step), publishing the referee's
-  /// commands it issued.
-  void step();
+  /// Publishes the referee's commands issued since the last call (by the
+  /// match's steps or an operator command), stamped `stamp`.
+  void publish_events(const ros::Time& stamp);
   /// Publishes the ball's ground truth (with the robots' ground truth).
   void publish_ball(const ros::Time& stamp);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) const;
@@ -45,4 +46,4 @@ class MatchInterface {
   mrt_msgs::RefereeCommand last_;
 };
 
-}  // namespace mrt::sim::node
+}  // namespace mrt::robocup::node

@@ -2,7 +2,7 @@
 
 #include <nav_msgs/Odometry.h>
 
-namespace mrt::sim::node {
+namespace mrt::robocup::node {
 
 mrt_msgs::RefereeCommand to_msg(const RefereeEvent& e, const MatchConfig& cfg, const std::string& frame,
                                 const ros::Time& stamp) {
@@ -26,7 +26,7 @@ MatchInterface::MatchInterface(ros::NodeHandle& nh, Match& match, std::string wo
   referee_pub_ = nh.advertise<mrt_msgs::RefereeCommand>("referee", 20, true);
   ball_pub_ = nh.advertise<nav_msgs::Odometry>("ball/ground_truth", 20);
   operator_sub_ = nh.subscribe("referee/operator", 10, &MatchInterface::on_operator, this);
-  Simulator& sim = match_.simulator();
+  sim::Simulator& sim = match_.simulator();
   for (std::size_t i = 0; i < sim.robots().size(); ++i) {
     ros::NodeHandle rnh(nh, sim.robots()[i].config.name);
     robot_subs_.push_back(rnh.subscribe<std_msgs::Float64>(
@@ -59,9 +59,8 @@ void MatchInterface::on_operator(const mrt_msgs::RefereeCommand::ConstPtr& msg) 
   }
 }
 
-void MatchInterface::step() {
-  const std::vector<RefereeEvent> events = match_.step();
-  const ros::Time stamp(match_.simulator().time());
+void MatchInterface::publish_events(const ros::Time& stamp) {
+  const std::vector<RefereeEvent> events = match_.take_events();
   for (const RefereeEvent& e : events) {
     last_ = to_msg(e, match_.config(), frame_, stamp);
     referee_pub_.publish(last_);
@@ -73,7 +72,7 @@ void MatchInterface::step() {
 
 void MatchInterface::publish_ball(const ros::Time& stamp) {
   if (ball_pub_.getNumSubscribers() == 0) return;
-  const Ball& b = match_.simulator().world().ball;
+  const sim::Ball& b = match_.simulator().world().ball;
   nav_msgs::Odometry o;
   o.header.stamp = stamp;
   o.header.frame_id = frame_;
@@ -101,4 +100,4 @@ void MatchInterface::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) co
   s.add("ball handlers off by their watchdog (~dribble_timeout)", match_.dribble_timeouts());
 }
 
-}  // namespace mrt::sim::node
+}  // namespace mrt::robocup::node

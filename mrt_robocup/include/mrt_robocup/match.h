@@ -1,8 +1,11 @@
-// Simulation of a RoboCup Middle Size League match on top of the
+// Simulation of a RoboCup Middle Size League match on top of mrt_sim's
 // Simulator (ROS-free): the robots' pneumatic kickers and ball handling,
 // scripted opponents (goalkeeper, defenders, attackers) and an automatic
 // referee box issuing start, stop, kick-off, goal, throw-in, goal kick,
 // corner and drop ball. The field is taken from the world's two goals.
+// The match is a StepHook of the simulator (mrt_sim/step_hook.h): it steers
+// the opponents before every physics step and kicks, handles the ball and
+// judges after it. Format and rules: mrt_robocup/doc/match.md.
 #pragma once
 
 #include <array>
@@ -10,9 +13,10 @@
 #include <vector>
 
 #include "mrt_sim/simulator.h"
+#include "mrt_sim/step_hook.h"
 #include "mrt_sim/world.h"
 
-namespace mrt::sim {
+namespace mrt::robocup {
 
 /// The pneumatic kicker and the ball handler of the world's robots.
 struct KickerConfig {
@@ -23,7 +27,7 @@ struct KickerConfig {
   double dribble_max_omega = 2.0;  // rad/s, turning faster than this the ball is lost
   /// s a set_dribbler(on) holds unless repeated (the handler's watchdog: a
   /// robot whose software died lets the ball go); 0: until switched off.
-  /// Not in the match file: sim_node's ~dribble_timeout.
+  /// Not in the match file: the match plugin's ~<name>/dribble_timeout.
   double dribble_timeout = 0.0;
 };
 
@@ -31,7 +35,7 @@ struct KickerConfig {
 struct OpponentConfig {
   std::string name;
   std::string role = "defender";  // goalkeeper, defender, attacker, static
-  Point2D home;                   // start and kick-off position
+  common::Point2D home;           // start and kick-off position
   double radius = 0.25;           // m
   double speed = 1.0;             // m/s
 };
@@ -59,7 +63,7 @@ struct MatchConfig {
   RefereeConfig referee;
 };
 
-/// Loads a match file (format: mrt_sim/doc/match.md, "Match file");
+/// Loads a match file (format: mrt_robocup/doc/match.md, "Match file");
 /// throws mrt::common::ParseError naming file:line:column.
 MatchConfig load_match_config(const std::string& path);
 MatchConfig parse_match_config(const std::string& yaml_text, const std::string& file);
@@ -74,7 +78,7 @@ RefereeCommand referee_command_from_string(const std::string& name);
 struct RefereeEvent {
   RefereeCommand command = RefereeCommand::kStop;
   int team = -1;          // the team the command is for, -1 for both
-  Point2D position;       // ball placement (world frame), where it applies
+  common::Point2D position;  // ball placement (world frame), where it applies
   std::array<int, 2> score{0, 0};
   double time = 0.0;      // s, simulated
   std::string reason;
@@ -84,15 +88,20 @@ struct RefereeEvent {
 /// adds the opponents as movers of class Robot in team 1's colour, enables
 /// the ball and sets its restitution against robots. Throws
 /// std::invalid_argument if the world lacks the two goals.
-void setup_match_world(const MatchConfig& cfg, World& world);
+void setup_match_world(const MatchConfig& cfg, sim::World& world);
 
-class Match {
+class Match : public sim::StepHook {
  public:
   enum class State { kStopped, kPlaying };
 
   /// `sim` was built on a world prepared by setup_match_world; it must
-  /// outlive the match.
-  Match(MatchConfig cfg, Simulator& sim);
+  /// outlive the match. The match attaches itself to `sim`
+  /// (Simulator::add_hook) and detaches in its destructor, so every
+  /// sim.step() from now on is a match step.
+  Match(MatchConfig cfg, sim::Simulator& sim);
+  ~Match() override;
+  Match(const Match&) = delete;
+  Match& operator=(const Match&) = delete;
 
   /// Fires robot `robot`'s kicker during the next step at `strength`
   /// (clamped to [0, 1]): if the ball is then in reach it leaves at
@@ -105,12 +114,19 @@ class Match {
   bool in_reach(std::size_t robot) const;
 
   /// An operator command (start, stop, drop ball, kick-off ...): applied
-  /// at once and reported by the next step().
+  /// at once and reported by the next take_events() (or step()).
   void command(RefereeCommand c, int team = -1);
 
-  /// One step: steers the opponents, steps the simulator, then kicks,
-  /// ball handling, opponents' kicks and the referee. Returns the
-  /// referee's commands issued during the step.
+  /// The hook (Simulator::step() calls them): before the physics step the
+  /// opponents are steered; after it come the robots' kicks, ball
+  /// handling, the opponents' kicks, the last touch and the referee.
+  void before_step(sim::Simulator& sim) override;
+  void after_step(sim::Simulator& sim) override;
+
+  /// The referee's commands issued since the last call, oldest first.
+  std::vector<RefereeEvent> take_events();
+  /// One step: sim.step() (which runs this match's hook), then
+  /// take_events().
   std::vector<RefereeEvent> step();
 
   State state() const { return state_; }
@@ -121,30 +137,30 @@ class Match {
   int dribble_timeouts() const { return dribble_timeouts_; }  // handlers off by the watchdog
   const MatchConfig& config() const { return cfg_; }
   /// Mouth centre of the goal team `team` defends.
-  const Goal& goal_of(int team) const { return team == 0 ? own_goal_ : other_goal_; }
-  Simulator& simulator() { return sim_; }
+  const sim::Goal& goal_of(int team) const { return team == 0 ? own_goal_ : other_goal_; }
+  sim::Simulator& simulator() { return sim_; }
 
  private:
   void steer_opponents();
-  Point2D opponent_target(std::size_t k) const;
+  common::Point2D opponent_target(std::size_t k) const;
   bool opponents_wait() const;
   void robot_kicks();
   void ball_handling();
   void opponent_kicks();
   void track_touch();
   void referee();
-  void emit(RefereeCommand c, int team, const Point2D& p, const std::string& reason);
-  void place_ball(const Point2D& p);
+  void emit(RefereeCommand c, int team, const common::Point2D& p, const std::string& reason);
+  void place_ball(const common::Point2D& p);
   /// Where the referee puts the ball for a restart at p: p, or, when a
   /// robot or an opponent stands on it, the nearest point of the field
   /// clear of every body (the ball placed inside a body was pushed over
   /// the line again at once: throw-in after throw-in).
-  Point2D free_spot(const Point2D& p) const;
-  void stoppage(RefereeCommand restart, int team, const Point2D& p, const std::string& reason);
+  common::Point2D free_spot(const common::Point2D& p) const;
+  void stoppage(RefereeCommand restart, int team, const common::Point2D& p, const std::string& reason);
 
   MatchConfig cfg_;
-  Simulator& sim_;
-  Goal own_goal_, other_goal_;
+  sim::Simulator& sim_;
+  sim::Goal own_goal_, other_goal_;
   std::vector<std::size_t> opponent_movers_;   // index of each opponent in sim.movers()
   std::vector<double> pending_kick_;           // strength, < 0 none
   std::vector<bool> dribbler_;
@@ -158,14 +174,14 @@ class Match {
   bool restart_pending_ = false, start_pending_ = false;
   RefereeCommand restart_ = RefereeCommand::kKickOff;
   int restart_team_ = -1;
-  Point2D restart_position_;
+  common::Point2D restart_position_;
   double restart_time_ = 0.0;
   int restart_for_ = -1;                       // team of the restart play started with
-  Point2D restart_spot_;
+  common::Point2D restart_spot_;
   double play_since_ = 0.0;
-  Point2D stuck_anchor_;
+  common::Point2D stuck_anchor_;
   double stuck_since_ = 0.0;
   std::vector<RefereeEvent> events_;
 };
 
-}  // namespace mrt::sim
+}  // namespace mrt::robocup

@@ -1,6 +1,6 @@
-// The match layer: kickers, ball handling, scripted opponents and the
-// automatic referee (see match.h and doc/match.md).
-#include "mrt_sim/match.h"
+// The match: kickers, ball handling, scripted opponents and the automatic
+// referee, as a step hook of the simulator (see match.h and doc/match.md).
+#include "mrt_robocup/match.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,16 @@
 
 #include "mrt_common/angle.h"
 
-namespace mrt::sim {
+namespace mrt::robocup {
 
+using common::Point2D;
 using mrt::common::normalize_angle;
+using sim::Ball;
+using sim::Goal;
+using sim::Mover;
+using sim::RobotState;
+using sim::Simulator;
+using sim::World;
 
 namespace {
 
@@ -113,7 +120,10 @@ Match::Match(MatchConfig cfg, Simulator& sim)
     restart_position_ = {(own_goal_.pose.x + other_goal_.pose.x) / 2, (own_goal_.pose.y + other_goal_.pose.y) / 2};
     restart_time_ = sim_.time();
   }
+  sim_.add_hook(*this);
 }
+
+Match::~Match() { sim_.remove_hook(*this); }
 
 void Match::kick(std::size_t robot, double strength) {
   pending_kick_.at(robot) = std::clamp(strength, 0.0, 1.0);
@@ -133,17 +143,25 @@ bool Match::in_reach(std::size_t robot) const {
   return std::abs(normalize_angle(bearing - r.pose.theta)) <= cfg_.kicker.half_angle;
 }
 
-std::vector<RefereeEvent> Match::step() {
-  steer_opponents();
-  sim_.step();
+void Match::before_step(Simulator&) { steer_opponents(); }
+
+void Match::after_step(Simulator&) {
   robot_kicks();
   ball_handling();
   opponent_kicks();
   track_touch();
   referee();
+}
+
+std::vector<RefereeEvent> Match::take_events() {
   std::vector<RefereeEvent> out;
   out.swap(events_);
   return out;
+}
+
+std::vector<RefereeEvent> Match::step() {
+  sim_.step();
+  return take_events();
 }
 
 Point2D Match::opponent_target(std::size_t k) const {
@@ -436,4 +454,4 @@ void Match::referee() {
   }
 }
 
-}  // namespace mrt::sim
+}  // namespace mrt::robocup

@@ -1,4 +1,4 @@
-// rostest of the match simulation in sim_node (match.test): the referee's
+// rostest of the match plugin in sim_node (match.test): the referee's
 // commands arrive on /referee (mrt_msgs/RefereeCommand) -- the automatic
 // kick-off and start, then the operator's stop, start and goal -- and the
 // ball's ground truth on /ball/ground_truth.
@@ -35,7 +35,7 @@ RefereeCommand op(const std::string& name, const std::string& team = "") {
   return m;
 }
 
-TEST(SimMatch, RefereeCommandsOnTheTopic) {
+TEST(MatchPlugin, RefereeCommandsOnTheTopic) {
   ros::NodeHandle nh;
   Referee ref;
   nav_msgs::Odometry ball;
@@ -97,6 +97,6 @@ TEST(SimMatch, RefereeCommandsOnTheTopic) {
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "mrt_sim_match_rostest");
+  ros::init(argc, argv, "mrt_robocup_match_rostest");
   return RUN_ALL_TESTS();
 }
