@@ -45,7 +45,7 @@ std::uint64_t volume(const Cell& c) {
 class Search {
  public:
   Search(const Localizer& loc, const SearchOptions& o, const std::vector<Percept>& percepts)
-      : loc_(loc), opt_(o), cpu_start_(thread_cpu_s()), start_(std::chrono::steady_clock::now()),
+      : loc_(loc), opt_(o), start_(std::chrono::steady_clock::now()), cpu_start_(thread_cpu_s()),
         ps_(loc.prepare(percepts)) {
     for (const auto& p : ps_) r_max_ = std::max(r_max_, p.r);
   }
@@ -75,8 +75,10 @@ class Search {
 
   const Localizer& loc_;
   const SearchOptions& opt_;
-  double cpu_start_;
+  // The CPU interval lies inside the wall-clock one (started after it, ended
+  // before it), so that a single thread's cpu_ms never exceeds time_ms.
   std::chrono::steady_clock::time_point start_;
+  double cpu_start_;
   std::vector<Localizer::Prepared> ps_;
   double r_max_ = 0.0;
   std::priority_queue<Node> queue_;
@@ -206,8 +208,8 @@ Result Localizer::localize(const std::vector<Percept>& percepts) const {
   Result r = s.run();
   if (r.complete) r.estimate = plateau(r.best, percepts);
   else r.estimate.mean = r.best.pose;
-  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.start_).count();
   r.cpu_ms = 1e3 * (thread_cpu_s() - s.cpu_start_);
+  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.start_).count();
   return r;
 }
 

@@ -4,7 +4,7 @@
 //   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined \
 //     -Imrt_sim/include -Imrt_common/include mrt_sim/test/fuzz/fuzz_world.cpp \
 //     mrt_sim/src/world.cpp mrt_sim/src/kinematics.cpp -lyaml-cpp -o /tmp/fuzz_world
-//   /tmp/fuzz_world -max_total_time=60 mrt_sim/test/data mrt_sim/worlds
+//   /tmp/fuzz_world -max_total_time=60 mrt_sim/test/data mrt_world/worlds
 #include <cstddef>
 #include <cstdint>
 #include <string>

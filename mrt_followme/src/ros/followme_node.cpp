@@ -26,7 +26,7 @@ namespace {
 
 using mrt::followme::FollowMeLoopOptions;
 using mrt::followme::FollowMeSession;
-namespace glue = mrt::followme::ros_glue;
+namespace glue = mrt::followme::node;
 
 struct NodeOptions {
   FollowMeLoopOptions loop;

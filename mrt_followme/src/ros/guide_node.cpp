@@ -94,9 +94,9 @@ class GuideNode {
       throw mrt::ros_common::ParamError("tour", "exhibits of the configuration, each once (" + bad + ")");
     planner_ = nh.serviceClient<nav_msgs::GetPlan>(opt_.plan_service);
     service_ = pnh.advertiseService("set_tour", &GuideNode::on_set_tour, this);
-    std::vector<mrt::followme::ros_glue::ExhibitRing> rings;
+    std::vector<mrt::followme::node::ExhibitRing> rings;
     for (const auto& e : cfg_.exhibits) rings.push_back({e.name, e.spot.x, e.spot.y, 0.4});
-    markers_ = std::make_unique<mrt::followme::ros_glue::TourMarkers>(
+    markers_ = std::make_unique<mrt::followme::node::TourMarkers>(
         rings, opt_.frame, [this](const std::vector<std::string>& t) { return set_tour(t); }, "/tour");
     timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &GuideNode::cycle, this);
   }
@@ -308,7 +308,7 @@ class GuideNode {
   ros::ServiceClient planner_;
   ros::ServiceServer service_;
   ros::Timer timer_;
-  std::unique_ptr<mrt::followme::ros_glue::TourMarkers> markers_;
+  std::unique_ptr<mrt::followme::node::TourMarkers> markers_;
 };
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include "mrt_common_ros/conversions.h"
 #include "mrt_sim/world.h"
 
-namespace mrt::followme::ros_glue {
+namespace mrt::followme::node {
 
 namespace {
 
@@ -170,4 +170,4 @@ std::string summary(const FollowMeResult& r) {
   return buf;
 }
 
-}  // namespace mrt::followme::ros_glue
+}  // namespace mrt::followme::node

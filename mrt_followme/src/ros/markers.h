@@ -9,7 +9,7 @@
 
 #include "mrt_followme/followme_loop.h"
 
-namespace mrt::followme::ros_glue {
+namespace mrt::followme::node {
 
 visualization_msgs::MarkerArray museum_markers(const FollowMeSession& s, const std::string& frame);
 visualization_msgs::MarkerArray dynamic_markers(const FollowMeSession& s, const std::string& frame);
@@ -18,4 +18,4 @@ std::string tour_status(const FollowMeSession& s);
 /// The summary the demo prints (the figures of followme_run).
 std::string summary(const FollowMeResult& r);
 
-}  // namespace mrt::followme::ros_glue
+}  // namespace mrt::followme::node

@@ -124,7 +124,7 @@ class Monitor {
     std::stringstream vs(visited);
     for (std::string v; std::getline(vs, v, ',');) r_.visited.push_back(v);
     std_msgs::String s;
-    s.data = mrt::followme::ros_glue::summary(r_);
+    s.data = mrt::followme::node::summary(r_);
     summary_pub_.publish(s);
     ROS_INFO("tour %s:\n%s", r_.completed ? "completed" : "ended", s.data.c_str());
   }

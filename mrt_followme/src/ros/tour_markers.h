@@ -12,7 +12,7 @@
 #include <interactive_markers/menu_handler.h>
 #include <ros/ros.h>
 
-namespace mrt::followme::ros_glue {
+namespace mrt::followme::node {
 
 struct ExhibitRing {
   std::string name;
@@ -79,4 +79,4 @@ class TourMarkers {
   std::vector<std::string> chosen_;
 };
 
-}  // namespace mrt::followme::ros_glue
+}  // namespace mrt::followme::node

@@ -26,7 +26,7 @@
 #include "mrt_robocup/coordination.h"
 #include "mrt_robocup/player.h"
 
-namespace mrt::robocup {
+namespace mrt::robocup::node {
 namespace {
 
 struct NodeOptions {
@@ -256,7 +256,7 @@ class PlayerNode {
 };
 
 }  // namespace
-}  // namespace mrt::robocup
+}  // namespace mrt::robocup::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "player_node");
@@ -265,7 +265,7 @@ int main(int argc, char** argv) {
     mrt::ros_common::ParamReader params(pnh);
     std::string ns = ros::this_node::getNamespace();
     while (!ns.empty() && ns.front() == '/') ns.erase(0, 1);
-    mrt::robocup::PlayerNode node(nh, mrt::robocup::NodeOptions::read(params, ns));
+    mrt::robocup::node::PlayerNode node(nh, mrt::robocup::node::NodeOptions::read(params, ns));
     ros::spin();
     return 0;
   });

@@ -6,7 +6,7 @@
 
 #include "mrt_brian/types.h"
 
-namespace mrt::roby {
+namespace mrt::roby::node {
 
 inline void append(const brian::CrispDataList& data, mrt_msgs::CrispDataArray& out) {
   for (const auto& c : data) {
@@ -25,4 +25,4 @@ inline mrt_msgs::CrispDataArray to_msg(const brian::CrispDataList& data, const r
   return out;
 }
 
-}  // namespace mrt::roby
+}  // namespace mrt::roby::node

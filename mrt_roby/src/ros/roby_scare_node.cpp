@@ -16,6 +16,7 @@
 namespace {
 
 using namespace mrt::roby;
+using namespace mrt::roby::node;
 
 /// The remote controller's last command, until ~remote_timeout old.
 class RemoteInput {

@@ -22,6 +22,7 @@
 namespace {
 
 using namespace mrt::roby;
+using namespace mrt::roby::node;
 
 struct SonarCrispOptions {
   std::vector<double> mounts_deg;

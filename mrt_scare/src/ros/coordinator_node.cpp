@@ -28,7 +28,7 @@
 #include "mrt_scare/coordinator.h"
 #include "mrt_scare/path_cost.h"
 
-namespace mrt::scare {
+namespace mrt::scare::node {
 
 struct CoordinatorNodeOptions {
   std::string activities;           // ~activities (required)
@@ -298,7 +298,7 @@ class CoordinatorNode {
   std::atomic<std::size_t> plans_{0}, plan_failures_{0};
 };
 
-}  // namespace mrt::scare
+}  // namespace mrt::scare::node
 
 namespace {
 volatile std::sig_atomic_t g_stop = 0;
@@ -312,7 +312,7 @@ int main(int argc, char** argv) {
   return mrt::ros_common::run_node([] {
     ros::NodeHandle nh, pnh("~");
     mrt::ros_common::ParamReader params(pnh);
-    mrt::scare::CoordinatorNode node(nh, mrt::scare::CoordinatorNodeOptions::read(params));
+    mrt::scare::node::CoordinatorNode node(nh, mrt::scare::node::CoordinatorNodeOptions::read(params));
     while (ros::ok() && !g_stop) ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
     node.leave();
     ros::WallDuration(0.1).sleep();

@@ -2,7 +2,7 @@
 
 #include <geometry_msgs/Point.h>
 
-namespace mrt::spike {
+namespace mrt::spike::node {
 
 namespace {
 
@@ -76,4 +76,4 @@ visualization_msgs::MarkerArray obstacle_markers(const WorldPlanner& p, const st
   return a;
 }
 
-}  // namespace mrt::spike
+}  // namespace mrt::spike::node

@@ -8,7 +8,7 @@
 
 #include "mrt_spike/world_planner.h"
 
-namespace mrt::spike {
+namespace mrt::spike::node {
 
 /// "decomposition" (quadtree leaves' outlines, LINE_LIST; only with SPIKE's
 /// quadtree) and "inflated" (cells blocked by the inflation only,
@@ -17,4 +17,4 @@ visualization_msgs::MarkerArray static_markers(const WorldPlanner& p, const std:
 /// "moving_obstacles": the cells blocked by the footprints (CUBE_LIST).
 visualization_msgs::MarkerArray obstacle_markers(const WorldPlanner& p, const std::string& frame);
 
-}  // namespace mrt::spike
+}  // namespace mrt::spike::node

@@ -29,6 +29,7 @@
 namespace {
 
 using namespace mrt::spike;
+using namespace mrt::spike::node;
 
 struct NodeOptions {
   std::string map;

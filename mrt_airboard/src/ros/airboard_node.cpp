@@ -25,7 +25,7 @@
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 
-namespace mrt::airboard {
+namespace mrt::airboard::node {
 
 namespace {
 
@@ -343,13 +343,13 @@ class AirboardNode : public SessionListener {
   ros::Time last_tf_stamp_;  // of the last odom -> base_link sent
 };
 
-}  // namespace mrt::airboard
+}  // namespace mrt::airboard::node
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "airboard_node");
   return mrt::ros_common::run_node([] {
     ros::NodeHandle nh, pnh("~");
-    mrt::airboard::AirboardNode node(nh, pnh);
+    mrt::airboard::node::AirboardNode node(nh, pnh);
     ros::spin();
     return 0;
   });

@@ -24,11 +24,11 @@
 #include "mrt_common_ros/params.h"
 #include "mrt_sim/simulator.h"
 #include "mrt_sim/world.h"
-#include "ros/conversions.h"
-#include "ros/markers.h"
-#include "ros/node_options.h"
-#include "ros/robot_interface.h"
-#include "ros/sim_plugins.h"
+#include "conversions.h"
+#include "markers.h"
+#include "node_options.h"
+#include "robot_interface.h"
+#include "sim_plugins.h"
 
 namespace mrt::sim::node {
 namespace {
