@@ -2,8 +2,10 @@
 # Checks that `catkin_make install` produces a working Roby. Installs the
 # workspace (the build that scripts/test.sh made, so nothing is compiled
 # again; with SCRATCH=1 a separate build of mrt_roby and its dependencies
-# under build/check_install) and, in a clean environment that knows only the
-# install space, runs `roslaunch mrt_roby roby.launch rviz:=false` for a few
+# under build/check_install), moves the install space to another directory
+# (build/check_install/moved: an install space is relocatable, its files
+# found through package paths) and, in a clean environment that knows only
+# that copy, runs `roslaunch mrt_roby roby.launch rviz:=false` for a few
 # seconds. Passes (exit 0) when the bringup's nodes come up, Mr. BRIAN's
 # commands and the AIRBoard's wheel commands are published and SCARE runs the
 # route (it has the plan and the localizer's pose); exit 1 otherwise, with
@@ -30,6 +32,12 @@ else
     { tail -30 "$WORK/build.log" >&2; echo "check_install: install failed ($WORK/build.log)" >&2; exit 1; }
 fi
 
+# The install space moved elsewhere: the original is removed, so that
+# nothing can still be found at its old path.
+MOVED="$WORK/moved"
+rm -rf "$MOVED" && mv "$INSTALL_DIR" "$MOVED"
+INSTALL_DIR="$MOVED"
+
 # The check itself, with nothing of the source or devel space in sight.
 env -i HOME="$HOME" PATH=/usr/bin:/bin LANG=C.UTF-8 ROS_HOME="$WORK/ros_home" \
   ROS_MASTER_URI="http://127.0.0.1:$(free_port)" INSTALL="$INSTALL_DIR" LOG="$WORK/roslaunch.log" \
@@ -55,7 +63,7 @@ done
 timeout 30 rostopic echo -n 1 --filter "m.state == m.RUNNING" /robot1/task_status >/dev/null 2>&1 ||
   fail "SCARE is not running the route (no plan, or no pose from the localizer)"
 nodes=$(rosnode list)
-for n in /sim /robot1/route_planner /robot1/dgps_localizer /robot1/scare /robot1/sonar_crisp /robot1/brian \
+for n in /sim /world /robot1/route_planner /robot1/dgps_localizer /robot1/scare /robot1/sonar_crisp /robot1/brian \
          /robot1/airboard /clearance_monitor; do
   grep -qx "$n" <<<"$nodes" || fail "node $n is not running"
 done

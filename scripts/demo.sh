@@ -127,7 +127,7 @@ fi
 if [ "$NAME" = robocup ]; then
   # score, ball control, passes, role changes per minute, localization and
   # ball errors from ground truth; the real-time factor the team held
-  /usr/bin/python3 "$ROOT/mrt_robocup/scripts/robocup_summary.py" "$OUT/demo.bag" ||
+  /usr/bin/python3 "$ROOT/src/mrt_robocup/scripts/robocup_summary.py" "$OUT/demo.bag" ||
     echo "robocup: no summary (see $OUT/roslaunch.log)"
   # rtf_monitor's last line, without the console's colour codes: printed
   # again as the demo's last line.

@@ -8,7 +8,8 @@
 #   3. build       the workspace (Release: -O2, no debug information)
 #   4. build tests the gtest and rostest targets
 #   5. tests       ctest, one test at a time, on a private ROS master port
-#   6. checks      catkin_lint --strict, check_sizes.py, check_install.sh
+#   6. checks      catkin_lint --strict, check_sizes.py, check_install.sh,
+#                  check_workspace.sh (a member of another catkin workspace)
 #   7. stage       waits for the sanitizer stage, counts its cases
 #   8. count       scripts/count_results.py: the last line
 #
@@ -117,10 +118,12 @@ PY
 
 # catkin_lint clean (errors and warnings); no source file over 500 lines and
 # no function over 80 unless scripts/size_exceptions.txt says why; the Roby
-# bringup runs from `catkin_make install`.
+# bringup runs from `catkin_make install` moved elsewhere; the repository
+# builds inside another workspace's src/ with catkin_make and catkin build.
 check_case catkin_lint catkin_lint --strict src
-check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d mrt_*/)
+check_case check_sizes /usr/bin/python3 scripts/check_sizes.py $(cd "$ROOT" && ls -d src/mrt_*/)
 check_case check_install "$ROOT/scripts/check_install.sh"
+check_case catkin_workspace "$ROOT/scripts/check_workspace.sh"
 
 phase_done "checks"
 
