@@ -53,6 +53,8 @@ class CsvReader {
 
   const std::string& file() const { return file_; }
   const std::vector<std::string>& header() const { return header_; }
+  /// Whether the file had a header row (always, but for an optional one).
+  bool has_header_row() const { return header_line_ > 0; }
   const std::vector<CsvRow>& rows() const { return rows_; }
 
   /// Index of a header column; throws ParseError naming the header line if

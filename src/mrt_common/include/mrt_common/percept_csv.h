@@ -59,7 +59,8 @@ struct PerceptCsvFrame {
 /// not a number. nan and inf are read as such (the consumer decides).
 inline std::vector<PerceptCsvFrame> read_percept_csv(std::istream& in, const std::string& file) {
   const CsvReader csv(in, file, percept_csv_columns());
-  const int first_line = csv.rows().empty() ? 0 : csv.rows().front().line;
+  // Without a header row, a bad first row may be a misspelt header: say so.
+  const int first_line = csv.has_header_row() || csv.rows().empty() ? -1 : csv.rows().front().line;
   std::string header;
   for (const auto& c : percept_csv_columns()) header += (header.empty() ? "" : ",") + c;
   auto number = [&](const CsvRow& row, std::size_t col) {

@@ -90,7 +90,7 @@ class SpikeNode {
       return true;
     }
     try {
-      tf_.transform(in, out, o_.frame_id, ros::Duration(0.2));
+      tf_.transform(in, out, o_.frame_id, ros::Duration(1.0));  // a just-started node may still wait for tf
       return true;
     } catch (const tf2::TransformException& e) {
       ROS_WARN("spike_node: the %s in %s is not in %s: %s", what, in.header.frame_id.c_str(), o_.frame_id.c_str(),
