@@ -59,6 +59,12 @@ BoardSession::BoardSession(const SessionOptions& o, std::unique_ptr<BoardLink> l
       odom_(o_.base, o_.base.counts_per_rev),
       backoff_(o_.reconnect_min, o_.reconnect_max) {}
 
+void BoardSession::set_limits(double max_wheel_speed, double max_wheel_accel) {
+  limiter_.set_limits(max_wheel_speed, max_wheel_accel);  // validates first
+  o_.base.max_wheel_speed = max_wheel_speed;
+  o_.base.max_wheel_accel = max_wheel_accel;
+}
+
 void BoardSession::log(Level level, const std::string& key, const std::string& text) {
   listener_->log(level, key, text);
 }

@@ -103,6 +103,14 @@ void VelocityLimiter::set_board_stopped(bool stopped) {
   if (stopped) last_.clear();  // the board's set-points are 0
 }
 
+void VelocityLimiter::set_limits(double max_wheel_speed, double max_wheel_accel) {
+  BaseParams p = p_;
+  p.max_wheel_speed = max_wheel_speed;
+  p.max_wheel_accel = max_wheel_accel;
+  p.validate();
+  p_ = std::move(p);
+}
+
 VelocityLimiter::Result VelocityLimiter::update(const Twist2D& requested, double dt) {
   Twist2D t = requested;
   if (!std::isfinite(t.vx) || !std::isfinite(t.vy) || !std::isfinite(t.omega)) t = Twist2D{};

@@ -170,6 +170,35 @@ TEST(VelocityLimiter, RestartsTheRampWhenTheBoardStopped) {
   expect_wheels(r.wheels, {1.0, -0.5, -0.5});
 }
 
+// airboard_node's dynamic_reconfigure: IANUS3 (r 0.05 m, track 0.38 m),
+// vx 0.6 m/s, omega 1 rad/s: w = (0.6 -+ 0.19) / 0.05 = (8.2, 15.8) rad/s.
+// A 6 rad/s limit scales both by 6 / 15.8: (3.113924, 6). Then 50 rad/s^2 at
+// 20 ms: a stop is a step of at most 1 rad/s on the fastest wheel, from the
+// last set-points: (3.113924 - 3.113924 / 6, 5). A negative limit is refused
+// and nothing changes.
+TEST(VelocityLimiter, SetLimitsAppliesFromTheNextUpdate) {
+  BaseParams p = base_preset("ianus3");
+  p.max_wheel_accel = 0.0;
+  VelocityLimiter lim(p);
+  auto r = lim.update({0.6, 0.0, 1.0}, 0.02);
+  EXPECT_FALSE(r.saturated);
+  expect_wheels(r.wheels, {8.2, 15.8});
+  lim.set_limits(6.0, 0.0);
+  r = lim.update({0.6, 0.0, 1.0}, 0.02);
+  EXPECT_TRUE(r.saturated);
+  EXPECT_NEAR(r.wheels[0], 8.2 * 6.0 / 15.8, 1e-12);
+  EXPECT_NEAR(r.wheels[1], 6.0, 1e-12);
+  lim.set_limits(6.0, 50.0);
+  r = lim.update({0.0, 0.0, 0.0}, 0.02);
+  EXPECT_TRUE(r.accel_limited);
+  EXPECT_NEAR(r.wheels[0], 8.2 * 6.0 / 15.8 * (5.0 / 6.0), 1e-12);
+  EXPECT_NEAR(r.wheels[1], 5.0, 1e-12);
+  EXPECT_THROW(lim.set_limits(-1.0, 50.0), std::invalid_argument);
+  EXPECT_THROW(lim.set_limits(6.0, std::nan("")), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(lim.params().max_wheel_speed, 6.0);
+  EXPECT_DOUBLE_EQ(lim.params().max_wheel_accel, 50.0);
+}
+
 // The board's base parameters are the stack's one geometry type plus the
 // board's limits: a preset carries mrt_common's geometry unchanged, and the
 // kinematics of the geometry alone equals the board's. Triskar, vx 1 m/s:

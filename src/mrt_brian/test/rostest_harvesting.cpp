@@ -1,6 +1,7 @@
 // rostest of brian_node on examples/harvesting: crisp data in, the
 // commands worked by hand in the rule base's README out; introspection; a
-// good and a bad ~reload (the bad one keeps the running rule base).
+// good and a bad ~reload (the bad one keeps the running rule base); the
+// CANDO threshold through dynamic_reconfigure.
 #include <gtest/gtest.h>
 #include <mrt_msgs/BrianIntrospection.h>
 #include <mrt_msgs/CommandArray.h>
@@ -12,6 +13,7 @@
 #include <map>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 
 #include "mrt_common_ros/rostest_helpers.h"
 
@@ -156,6 +158,64 @@ TEST(Harvesting, ReloadKeepsTheRuleBaseOnError) {
   EXPECT_TRUE(t.response.success) << t.response.message;
   c = h.cycle(kAutoFarTarget);
   EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+}
+
+// dynamic_reconfigure of the CANDO threshold (§10.4.4: a behaviour is
+// active when its CANDO is above it). An obstacle at 50 cm is NEAREST
+// (TRA 0 0.1 40 60: (60 - 50) / 20) and NEAR (TRA 40 60 100 120:
+// (50 - 40) / 20) to degree 0.5, so AvoidObstacle's CANDO, (AND Auto
+// ObstacleClose), is 0.5: active under 0.49, not under 0.6. GoToTarget's
+// CANDO is 1 (Auto, target seen, batteries almost full), GoToHome's WANT 0:
+// without AvoidObstacle the commands are the far target's, 75 cm/s at 0 deg
+// (ReactsToCrispData), with it 10 cm/s at 90 deg.
+bool set_threshold(double value, double* applied) {
+  dynamic_reconfigure::Reconfigure srv;
+  dynamic_reconfigure::DoubleParameter p;
+  p.name = "threshold";
+  p.value = value;
+  srv.request.config.doubles.push_back(p);
+  if (!ros::service::call("brian/set_parameters", srv)) return false;
+  for (const auto& d : srv.response.config.doubles)
+    if (d.name == "threshold") *applied = d.value;
+  return true;
+}
+
+bool active(const mrt_msgs::BrianIntrospection& m, const std::string& behavior) {
+  for (const auto& b : m.behaviors)
+    if (b.name == behavior) return b.active;
+  ADD_FAILURE() << "no behaviour " << behavior;
+  return false;
+}
+
+TEST(Harvesting, ReconfiguredThresholdChangesWhichBehavioursAct) {
+  Harness h;
+  ASSERT_TRUE(ros::service::waitForService("brian/set_parameters", ros::Duration(20)));
+  auto in = kAutoFarTarget;
+  in["ObstacleDistance"] = 50;
+  auto c = h.cycle(in);
+  EXPECT_NEAR(c["SpeedModule"], 10.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 90.0, 1e-6);
+  EXPECT_TRUE(active(h.intro_, "AvoidObstacle"));
+
+  double applied = -1;
+  ASSERT_TRUE(set_threshold(0.6, &applied));
+  EXPECT_DOUBLE_EQ(applied, 0.6);
+  double param = -1;
+  EXPECT_TRUE(ros::param::get("brian/threshold", param));  // the server mirrors it
+  EXPECT_DOUBLE_EQ(param, 0.6);
+  h.have_intro_ = false;
+  c = h.cycle(in);
+  EXPECT_NEAR(c["SpeedModule"], 75.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 0.0, 1e-6);
+  ASSERT_TRUE(h.have_intro_);
+  EXPECT_FALSE(active(h.intro_, "AvoidObstacle"));
+  EXPECT_TRUE(active(h.intro_, "GoToTarget"));
+
+  ASSERT_TRUE(set_threshold(0.49, &applied));
+  c = h.cycle(in);
+  EXPECT_NEAR(c["SpeedModule"], 10.0, 1e-6);
+  EXPECT_NEAR(c["SpeedAngle"], 90.0, 1e-6);
+  EXPECT_TRUE(active(h.intro_, "AvoidObstacle"));
 }
 
 // Run by harvesting_rate.test (~rate 20 Hz): one input, a cycle every 50 ms.

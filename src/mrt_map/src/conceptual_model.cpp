@@ -18,6 +18,25 @@ double AttributeMatcher::match(double value, const std::string& symbol) const {
   return it == symbols.end() ? 0.0 : it->second;
 }
 
+ModelTuning ConceptualModel::tuning() const {
+  return {tracker_.gate, tracker_.merge_gate, team_.gate, team_.extra_sigma};
+}
+
+void ConceptualModel::set_tuning(const ModelTuning& t) {
+  const auto require = [](bool ok, const char* key, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("'") + key + "': expected " + what);
+  };
+  require(std::isfinite(t.gate) && t.gate > 0.0, "tracker.gate", "a finite number > 0");
+  require(std::isfinite(t.merge_gate) && t.merge_gate > 0.0, "tracker.merge_gate", "a finite number > 0");
+  require(std::isfinite(t.team_gate) && t.team_gate > 0.0, "team.gate", "a finite number > 0");
+  require(std::isfinite(t.team_extra_sigma) && t.team_extra_sigma >= 0.0, "team.extra_sigma",
+          "a finite number >= 0 (m)");
+  tracker_.gate = t.gate;
+  tracker_.merge_gate = t.merge_gate;
+  team_.gate = t.team_gate;
+  team_.extra_sigma = t.team_extra_sigma;
+}
+
 int ConceptualModel::find(const std::string& name) const {
   const auto it = index_.find(name);
   return it == index_.end() ? -1 : it->second;

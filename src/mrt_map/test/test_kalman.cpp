@@ -110,6 +110,33 @@ TEST(Merger, JoinsTwoSensorsOfOneObjectOnly) {
   EXPECT_EQ(merger.merge({obs(0, 0, 0.04, "r/cam"), obs(1.0, 0, 0.04, "r/sonar")}).size(), 2u);
 }
 
+// map_node's dynamic_reconfigure: the Merger reads the tuned merge gate.
+// z1 = (0, 0), z2 = (0.4, 0), R = 0.01 I each: d2 = 0.16 / 0.02 = 8 -> one
+// object under 9.21, two under 4. Bad values are refused, nothing changed.
+TEST(Merger, FollowsTheTunedMergeGate) {
+  ConceptualModel m = ConceptualModel::parse("classes:\n  Ball: {}\n", "t.yaml");
+  const Merger merger(m);
+  const std::vector<Observation> two = {obs(0, 0, 0.01, "r/cam"), obs(0.4, 0, 0.01, "r/sonar")};
+  EXPECT_EQ(merger.merge(two).size(), 1u);
+  ModelTuning t = m.tuning();
+  EXPECT_DOUBLE_EQ(t.merge_gate, 9.21);
+  EXPECT_DOUBLE_EQ(t.team_gate, 13.82);
+  t.merge_gate = 4.0;
+  m.set_tuning(t);
+  EXPECT_EQ(merger.merge(two).size(), 2u);
+  t.merge_gate = 8.5;  // just above d2
+  m.set_tuning(t);
+  EXPECT_EQ(merger.merge(two).size(), 1u);
+  ModelTuning bad = t;
+  bad.gate = 0.0;
+  EXPECT_THROW(m.set_tuning(bad), std::invalid_argument);
+  bad = t;
+  bad.team_extra_sigma = -0.1;
+  EXPECT_THROW(m.set_tuning(bad), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(m.tracker().merge_gate, 8.5);
+  EXPECT_DOUBLE_EQ(m.tracker().gate, 9.21);
+}
+
 TEST(Merger, LatencyCompensation) {
   ConceptualModel m = ConceptualModel::parse(
       "classes:\n  Ball: {motion: constant_velocity, accel_noise: 0}\nteam: {max_latency: 1.0, extra_sigma: 0}\n", "t.yaml");

@@ -195,6 +195,33 @@ Calibration scale_calibration(const Calibration& cal, double scale) {
   return out;
 }
 
+DetectorTuning tuning_of(const DetectorOptions& o) {
+  return {o.min_distance, o.max_distance, o.line_max_distance, o.min_ball_pixels, o.min_goal_pixels,
+          o.min_robot_pixels};
+}
+
+DetectorOptions retuned(const DetectorOptions& o, const DetectorTuning& t) {
+  const auto require = [](bool ok, const char* key, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("detector '") + key + "': expected " + what);
+  };
+  require(std::isfinite(t.min_distance) && t.min_distance >= 0.0, "min_distance", "a finite number >= 0 (m)");
+  require(std::isfinite(t.max_distance) && t.max_distance > t.min_distance, "max_distance",
+          "a finite number > 'min_distance' (m)");
+  require(std::isfinite(t.line_max_distance) && t.line_max_distance > 0.0, "line_max_distance",
+          "a finite number > 0 (m)");
+  require(t.min_ball_pixels >= 1, "min_ball_pixels", "an integer >= 1");
+  require(t.min_goal_pixels >= 1, "min_goal_pixels", "an integer >= 1");
+  require(t.min_robot_pixels >= 1, "min_robot_pixels", "an integer >= 1");
+  DetectorOptions out = o;
+  out.min_distance = t.min_distance;
+  out.max_distance = t.max_distance;
+  out.line_max_distance = t.line_max_distance;
+  out.min_ball_pixels = t.min_ball_pixels;
+  out.min_goal_pixels = t.min_goal_pixels;
+  out.min_robot_pixels = t.min_robot_pixels;
+  return out;
+}
+
 Calibration load_calibration(const std::string& path) {
   return parse_calibration(mrt::common::read_file(path, "cannot open calibration file", 1u << 20), path);
 }

@@ -2,10 +2,12 @@
 // (2, -0.5) m from the viewpoint, which is 0.1 m ahead of base_link (tf),
 // gives a Ball percept at (2.1, -0.5) in robot1/base_link; a mono8 frame
 // and a 320x240 frame are dropped and counted in the diagnostics; the
-// debug image comes out at the camera's size.
+// debug image comes out at the camera's size. Reconfigured through
+// /robot1/recvision/set_parameters, a max_distance short of the ball hides it.
 #include <gtest/gtest.h>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <mrt_msgs/Percept.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
@@ -109,6 +111,55 @@ TEST(RecVisionNode, PerceptsDebugImageAndDroppedFrames) {
   EXPECT_TRUE(wait_for([&] { return value_of(diag, "dropped: wrong size") == "1"; }, 10.0));
   EXPECT_EQ(value_of(diag, "dropped: wrong encoding"), "1");
   EXPECT_EQ(percepts, before);  // nothing published for them
+}
+
+// dynamic_reconfigure: the ball at (2, -0.5) m from the viewpoint is 2.06 m
+// away and every ray through it meets the floor beyond 2 m (its centre's at
+// 2.06 * 0.6 / (0.6 - 0.11) = 2.52 m, the viewpoint 0.6 m up): with
+// max_distance 1.5 m nothing of it is scanned, so the percepts hold no Ball
+// and nothing beyond 1.5 m (+ the 0.1 m mount); back at the file's 8 m the
+// Ball returns.
+TEST(RecVisionNode, ReconfiguredMaxDistanceHidesTheFartherBall) {
+  ros::NodeHandle nh;
+  mrt_msgs::Percept last;
+  int percepts = 0;
+  auto p_sub = nh.subscribe<mrt_msgs::Percept>("/robot1/percepts", 10, [&](const mrt_msgs::PerceptConstPtr& m) {
+    last = *m;
+    ++percepts;
+  });
+  auto pub = nh.advertise<sensor_msgs::Image>("/robot1/camera/image_raw", 5);
+  ASSERT_TRUE(wait_for([&] { return pub.getNumSubscribers() > 0 && p_sub.getNumPublishers() > 0; }, 20.0));
+  ASSERT_TRUE(ros::service::waitForService("/robot1/recvision/set_parameters", ros::Duration(20)));
+  const auto cal = mrt::recvision::load_calibration(MRT_RECVISION_TEST_DATA "/hyperbolic.yaml");
+  ts::Scene s;
+  s.ball = ts::SceneBall{Eigen::Vector2d(2.0, -0.5), 0.11};
+  const cv::Mat frame = ts::render(cal.camera, s, 0, 0, 0);
+  // one frame, its percept's balls (-1: no percept)
+  const auto balls_seen = [&] {
+    const int before = percepts;
+    pub.publish(to_msg(frame, "rgb8"));
+    if (!wait_for([&] { return percepts > before; }, 10.0)) return -1;
+    int n = 0;
+    for (const auto& o : last.objects) n += o.membership_class == "Ball";
+    return n;
+  };
+  const auto set_max_distance = [&](double value) -> double {
+    dynamic_reconfigure::Reconfigure srv;
+    dynamic_reconfigure::DoubleParameter p;
+    p.name = "max_distance";
+    p.value = value;
+    srv.request.config.doubles.push_back(p);
+    if (!ros::service::call("/robot1/recvision/set_parameters", srv)) return NAN;
+    for (const auto& d : srv.response.config.doubles)
+      if (d.name == "max_distance") return d.value;
+    return NAN;
+  };
+  EXPECT_EQ(balls_seen(), 1);
+  EXPECT_DOUBLE_EQ(set_max_distance(1.5), 1.5);
+  EXPECT_EQ(balls_seen(), 0);
+  for (const auto& o : last.objects) EXPECT_LE(attr(o, "distance"), 1.5 + 0.1 + 0.05) << o.membership_class;
+  EXPECT_DOUBLE_EQ(set_max_distance(8.0), 8.0);
+  EXPECT_EQ(balls_seen(), 1);
 }
 
 int main(int argc, char** argv) {

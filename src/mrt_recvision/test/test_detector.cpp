@@ -184,3 +184,39 @@ TEST(Detector, BallPartlyHiddenByTheBodyIsMeasuredFromItsOuterEdge) {
     EXPECT_NEAR(balls[0].bearing, M_PI / 2, 0.02);
   }
 }
+
+// recvision_node's dynamic_reconfigure (retuned): a ray-cast ball at
+// (2, -0.5) m is 2.06 m away; the rays through it meet the floor farther
+// still (its centre's at 2.06 * 0.6 / (0.6 - 0.11) = 2.52 m), so with
+// max_distance 1.5 m none of its pixels is scanned: no ball; with
+// min_ball_pixels beyond the whole image's pixel count neither. Bad values
+// name the key.
+TEST(Detector, RetunedThresholdsChangeWhatIsDetected) {
+  const Calibration c = cal();
+  ts::Scene s;
+  s.ball = ts::SceneBall{Eigen::Vector2d(2.0, -0.5), 0.11};
+  const Frame f = frame_of(ts::render(c.camera, s, 0, 0, 0));
+  EXPECT_EQ(of_class(Detector(c).process(f), "Ball").size(), 1u);
+  DetectorTuning t = tuning_of(c.detector);
+  EXPECT_DOUBLE_EQ(t.max_distance, c.detector.max_distance);
+  Calibration near = c;
+  t.max_distance = 1.5;
+  near.detector = retuned(c.detector, t);
+  EXPECT_EQ(of_class(Detector(near).process(f), "Ball").size(), 0u);
+  Calibration strict = c;
+  t = tuning_of(c.detector);
+  t.min_ball_pixels = 640 * 480 + 1;
+  strict.detector = retuned(c.detector, t);
+  EXPECT_EQ(of_class(Detector(strict).process(f), "Ball").size(), 0u);
+  t = tuning_of(c.detector);
+  t.max_distance = t.min_distance;
+  try {
+    retuned(c.detector, t);
+    ADD_FAILURE() << "max_distance = min_distance accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_distance"), std::string::npos) << e.what();
+  }
+  t = tuning_of(c.detector);
+  t.min_goal_pixels = 0;
+  EXPECT_THROW(retuned(c.detector, t), std::invalid_argument);
+}

@@ -7,11 +7,26 @@
 namespace mrt::spike {
 
 WorldPlanner::WorldPlanner(const WorldGrid& map, const WorldPlannerOptions& options)
-    : map_(map), options_(options) {
-  const double inflation = (options.robot_radius + options.safety_distance) / map.frame.resolution;
+    : map_(map), options_(options), planner_(make(options)) {}
+
+std::unique_ptr<DynamicPlanner> WorldPlanner::make(const WorldPlannerOptions& options) const {
+  const double inflation = (options.robot_radius + options.safety_distance) / map_.frame.resolution;
   PlannerOptions po;
   po.spike = options.spike;
-  planner_ = make_dynamic_planner(options.planner, inflate(map.grid, inflation), inflation, options.horizon, po);
+  return make_dynamic_planner(options.planner, inflate(map_.grid, inflation), inflation, options.horizon, po);
+}
+
+bool WorldPlanner::reconfigure(const WorldPlannerOptions& options) {
+  const WorldPlannerOptions& o = options_;
+  const bool rebuild = options.robot_radius != o.robot_radius || options.safety_distance != o.safety_distance ||
+                       options.horizon != o.horizon || options.planner != o.planner;
+  if (rebuild) {
+    std::unique_ptr<DynamicPlanner> fresh = make(options);  // may throw: nothing changed yet
+    for (const auto& [id, m] : moving_) fresh->obstacles().set(id, m);
+    planner_ = std::move(fresh);
+  }
+  options_ = options;
+  return rebuild;
 }
 
 const Quadtree* WorldPlanner::quadtree() const {
@@ -55,11 +70,16 @@ WorldPlan WorldPlanner::plan_exact(double x0, double y0, double x1, double y1) {
 
 void WorldPlanner::set_obstacle(int id, double x, double y, double r, double vx, double vy) {
   const GridFrame& f = map_.frame;
-  planner_->obstacles().set(id, {(x - f.origin_x) / f.resolution, (y - f.origin_y) / f.resolution, r / f.resolution,
-                               vx / f.resolution, vy / f.resolution});
+  const MovingObstacle m{(x - f.origin_x) / f.resolution, (y - f.origin_y) / f.resolution, r / f.resolution,
+                         vx / f.resolution, vy / f.resolution};
+  planner_->obstacles().set(id, m);
+  moving_[id] = m;
 }
 
-void WorldPlanner::remove_obstacle(int id) { planner_->obstacles().remove(id); }
+void WorldPlanner::remove_obstacle(int id) {
+  planner_->obstacles().remove(id);
+  moving_.erase(id);
+}
 
 bool WorldPlanner::still_valid(const WorldPlan& p) const { return p.solved && planner_->still_valid(p.waypoints); }
 

@@ -204,3 +204,50 @@ TEST(WorldPlanner, ToleranceReplacesTheGoalByTheNearestReachablePoint) {
   EXPECT_NEAR(exact.length, 0.4, 1e-9);
   EXPECT_FALSE(planner.plan(0.8, 0.2, 0.1, 0.2, 1.0).solved);  // the start in the wall
 }
+
+// spike_node's dynamic_reconfigure: 21 x 12 cells of 0.1 m, column 10 walled
+// from row 0 to 4. Inflation 0 leaves (10, 5) free; robot radius 0 + safety
+// 0.2 m = 2 cells blocks every cell centre within 2 of a wall cell: (10, 6)
+// (2 from (10, 4)), not (10, 7), and (8, 4), not (8, 5) (sqrt 5 > 2). A
+// moving obstacle of radius 0.1 m (1 cell) at (3, 9), still: its footprint
+// is the cells within 1 + inflation, so (3, 11) is blocked only after.
+TEST(WorldPlanner, ReconfigureReinflatesAndKeepsTheMovingObstacles) {
+  WorldGrid map;
+  map.grid = OccupancyGrid(21, 12);
+  for (int y = 0; y <= 4; ++y) map.grid.set_blocked(10, y, true);
+  map.frame.resolution = 0.1;
+  WorldPlannerOptions o;
+  o.robot_radius = 0.0;
+  o.safety_distance = 0.0;
+  o.planner = "astar";
+  WorldPlanner planner(map, o);
+  planner.set_obstacle(4, 0.3, 0.9, 0.1, 0.0, 0.0);
+  EXPECT_TRUE(planner.with_obstacles().blocked(3, 9));
+  EXPECT_FALSE(planner.with_obstacles().blocked(3, 11));
+  EXPECT_FALSE(planner.inflated().blocked(10, 5));
+  const WorldPlan before = planner.plan(0.2, 0.2, 1.8, 0.2);
+  ASSERT_TRUE(before.solved);
+
+  o.safety_distance = 0.2;
+  EXPECT_TRUE(planner.reconfigure(o));
+  EXPECT_TRUE(planner.inflated().blocked(10, 6));
+  EXPECT_FALSE(planner.inflated().blocked(10, 7));
+  EXPECT_TRUE(planner.inflated().blocked(8, 4));
+  EXPECT_FALSE(planner.inflated().blocked(8, 5));
+  EXPECT_TRUE(planner.with_obstacles().blocked(3, 11));  // the obstacle kept, widened
+  EXPECT_FALSE(planner.with_obstacles().blocked(3, 5));  // 4 from it: beyond 1 + 2
+  const WorldPlan after = planner.plan(0.2, 0.2, 1.8, 0.2);
+  ASSERT_TRUE(after.solved);
+  EXPECT_GT(after.length, before.length + 0.1);  // over (10, 7) instead of (10, 5): 2 rows up and down
+  for (const Cell& c : after.waypoints) EXPECT_FALSE(planner.inflated().blocked(c.x, c.y)) << c.x << ", " << c.y;
+
+  o.spacing = 0.05;  // the spacing alone: no rebuild
+  EXPECT_FALSE(planner.reconfigure(o));
+  EXPECT_DOUBLE_EQ(planner.options().spacing, 0.05);
+  o.planner = "ompl";  // refused: nothing changes
+  EXPECT_THROW(planner.reconfigure(o), std::invalid_argument);
+  EXPECT_EQ(planner.options().planner, "astar");
+  EXPECT_TRUE(planner.inflated().blocked(10, 6));
+  planner.remove_obstacle(4);
+  EXPECT_FALSE(planner.with_obstacles().blocked(3, 9));
+}

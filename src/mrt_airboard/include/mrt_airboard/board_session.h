@@ -134,6 +134,11 @@ class BoardSession {
   /// Counts (and logs) an input the caller could not even translate (e.g.
   /// an unknown wheel-command mode).
   void drop_input(const std::string& why);
+  /// New wheel speed and acceleration limits (rad/s, rad/s^2; 0 = none) at
+  /// run time (airboard_node's dynamic_reconfigure), applied from the next
+  /// control period to twists, Mr. BRIAN's commands and wheel speeds alike.
+  /// Throws std::invalid_argument naming the parameter, with nothing changed.
+  void set_limits(double max_wheel_speed, double max_wheel_accel);
 
   // ------------------------------------------------------------ periodic
   /// The control period (at options.rate): (re)connects when due, checks

@@ -140,6 +140,12 @@ class VelocityLimiter {
   /// last set-points returned.
   void set_board_stopped(bool stopped);
   bool board_stopped() const { return board_stopped_; }
+  /// New speed and acceleration limits (rad/s, rad/s^2; 0 = none, as in
+  /// BaseParams) from the next update(); the ramp goes on from the last
+  /// set-points. Throws std::invalid_argument naming the parameter, with
+  /// nothing changed.
+  void set_limits(double max_wheel_speed, double max_wheel_accel);
+  const BaseParams& params() const { return p_; }
   const BaseKinematics& kinematics() const { return *kin_; }
 
  private:

@@ -2,7 +2,10 @@
 // options (ParamReader), messages <-> core types, timers, diagnostics; the
 // link session, stream switching, command arbitration and speed estimation
 // live in the ROS-free BoardSession (include/mrt_airboard/board_session.h).
+// dynamic_reconfigure (cfg/Airboard.cfg): the wheel speed and acceleration
+// limits; one mutex serializes every callback with the reconfiguration.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <mrt_msgs/AirboardStatus.h>
 #include <mrt_msgs/CommandArray.h>
@@ -16,9 +19,12 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "mrt_airboard/AirboardConfig.h"
 #include "mrt_airboard/board_session.h"
 #include "mrt_common/angle.h"
 #include "mrt_common/base_kinematics.h"
@@ -118,7 +124,7 @@ NodeOptions load_options(const ros::NodeHandle& pnh) {
 
 class AirboardNode : public SessionListener {
  public:
-  AirboardNode(ros::NodeHandle& nh, const ros::NodeHandle& pnh)
+  AirboardNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
       : o_(load_options(pnh)),
         session_(o_.session, std::make_unique<SerialLink>(o_.port, o_.baud), this),
         n_(session_.wheel_count()) {
@@ -132,28 +138,61 @@ class AirboardNode : public SessionListener {
     diag_.setHardwareID("AIRBoard on " + o_.port);
     diag_.add("AIRBoard link", this, &AirboardNode::diag_link);
     diag_.add("AIRBoard motors", this, &AirboardNode::diag_motors);
-    control_timer_ = nh.createTimer(ros::Duration(1.0 / o_.session.rate),
-                                    [this](const ros::TimerEvent&) { session_.control(ros::Time::now().toSec()); });
-    read_timer_ = nh.createTimer(ros::Duration(0.002),
-                                 [this](const ros::TimerEvent&) { session_.read(ros::Time::now().toSec()); });
+    control_timer_ = nh.createTimer(ros::Duration(1.0 / o_.session.rate), [this](const ros::TimerEvent&) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      session_.control(ros::Time::now().toSec());
+    });
+    read_timer_ = nh.createTimer(ros::Duration(0.002), [this](const ros::TimerEvent&) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      session_.read(ros::Time::now().toSec());
+    });
     diag_timer_ = nh.createTimer(ros::Duration(1.0), &AirboardNode::on_diag, this);
     ROS_INFO("airboard_node: base '%s' (%zu wheels), port %s at %d baud", o_.session.base.name.c_str(), n_,
              o_.port.c_str(), o_.baud);
+    // The limits start from ~base/max_wheel_speed and ~base/max_wheel_accel
+    // (validated with the base), not from the server's own parameters.
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<mrt_airboard::AirboardConfig>>(reconfigure_mutex_, pnh);
+    reconfigure_->updateConfig(current_limits());
+    reconfigure_->setCallback([this](mrt_airboard::AirboardConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
   // ------------------------------------------------------------ inputs
+  mrt_airboard::AirboardConfig current_limits() const {
+    mrt_airboard::AirboardConfig c = mrt_airboard::AirboardConfig::__getDefault__();
+    c.max_wheel_speed = session_.options().base.max_wheel_speed;
+    c.max_wheel_accel = session_.options().base.max_wheel_accel;
+    return c;
+  }
+
+  // New limits from the next control period; refused ones (the session
+  // validates them) are logged and `c` gets the current ones back.
+  void on_reconfigure(mrt_airboard::AirboardConfig& c) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      session_.set_limits(c.max_wheel_speed, c.max_wheel_accel);
+      ROS_INFO("airboard_node: wheel limits %.3f rad/s, %.3f rad/s^2 (0 = none)", c.max_wheel_speed,
+               c.max_wheel_accel);
+    } catch (const std::invalid_argument& e) {
+      ROS_WARN("airboard_node: reconfiguration refused: %s", e.what());
+    }
+    c = current_limits();
+  }
+
   void on_cmd_vel(const geometry_msgs::Twist& m) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     session_.command_twist(Twist2D{m.linear.x, m.linear.y, m.angular.z}, ros::Time::now().toSec());
   }
 
   void on_brian(const mrt_msgs::CommandArray& m) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::pair<std::string, double>> c;
     for (const auto& x : m.commands) c.emplace_back(x.name, x.value);
     session_.command_brian(c, ros::Time::now().toSec());
   }
 
   void on_wheel_cmd(const mrt_msgs::WheelCommand& m) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const double now = ros::Time::now().toSec();
     if (m.mode == mrt_msgs::WheelCommand::MODE_PWM)
       session_.command_wheels(BoardSession::WheelMode::kPwm, m.duty, now);
@@ -271,6 +310,7 @@ class AirboardNode : public SessionListener {
 
   // ------------------------------------------------------------ diagnostics
   void on_diag(const ros::TimerEvent&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     diag_.update();
     if (!session_.link_up()) publish_status(ros::Time::now(), nullptr);
   }
@@ -330,6 +370,7 @@ class AirboardNode : public SessionListener {
     }
   }
 
+  std::mutex mutex_;  // every callback's: the session is not thread-safe
   NodeOptions o_;
   BoardSession session_;
   std::size_t n_;
@@ -341,6 +382,8 @@ class AirboardNode : public SessionListener {
   diagnostic_updater::Updater diag_;
   tf2_ros::TransformBroadcaster tf_;
   ros::Time last_tf_stamp_;  // of the last odom -> base_link sent
+  boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<mrt_airboard::AirboardConfig>> reconfigure_;
 };
 
 }  // namespace mrt::airboard::node

@@ -1,18 +1,23 @@
 // brian_node: Mr. BRIAN as a ROS node. Wiring only: parameters -> BrianOptions,
 // mrt_msgs/CrispDataArray -> CrispDataList, CommandList -> mrt_msgs/CommandArray.
-// See README.md for the topics, services and parameters.
+// See README.md for the topics, services and parameters. dynamic_reconfigure
+// (cfg/Brian.cfg): the CANDO threshold; one mutex serializes every callback
+// with the reconfiguration.
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <mrt_msgs/BrianIntrospection.h>
 #include <mrt_msgs/CommandArray.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
+#include "mrt_brian/BrianConfig.h"
 #include "mrt_brian/brian.h"
 #include "mrt_common/parse_error.h"
 #include "mrt_common_ros/params.h"
@@ -123,6 +128,11 @@ class BrianNode {
     ROS_INFO("brian_node: rule base %s, profile %s, %d behaviours, %s", options_.config.c_str(),
              profile_name(options_.brian.profile), brian_->engine().size(),
              options_.rate > 0 ? ("cycle at " + std::to_string(options_.rate) + " Hz").c_str() : "a cycle per message");
+    // last: from here the threshold is also ~threshold's dynamic_reconfigure
+    // (the validated start-up value, not the server's clamped copy)
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<mrt_brian::BrianConfig>>(reconfigure_mutex_, pnh_);
+    reconfigure_->updateConfig(current_config());
+    reconfigure_->setCallback([this](mrt_brian::BrianConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
@@ -133,7 +143,26 @@ class BrianNode {
     return true;
   }
 
+  mrt_brian::BrianConfig current_config() const {
+    mrt_brian::BrianConfig c = mrt_brian::BrianConfig::__getDefault__();
+    c.threshold = brian_->engine().threshold();
+    return c;
+  }
+
+  // The threshold from the next cycle (BehaviorEngine::set_threshold, the
+  // legacy WANT filter too); kept in the options, so ~reload keeps it.
+  void on_reconfigure(mrt_brian::BrianConfig& c) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (c.threshold >= 0.0 && c.threshold <= 1.0 && c.threshold != brian_->engine().threshold()) {
+      brian_->engine().set_threshold(c.threshold);
+      options_.brian.threshold = c.threshold;
+      ROS_INFO("brian_node: CANDO threshold %g", c.threshold);
+    }
+    c = current_config();
+  }
+
   void on_crisp(const mrt_msgs::CrispDataArray::ConstPtr& msg) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     std::string why;
     if (msg->data.size() > 10000) why = "more than 10000 data";
     for (const auto& d : msg->data)
@@ -181,6 +210,7 @@ class BrianNode {
   // Fixed rate: a cycle on the latest input, or the safe commands when no
   // crisp data arrived within ~input_timeout.
   void on_timer(const ros::TimerEvent&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const ros::Time now = ros::Time::now();
     if (options_.input_timeout > 0.0 && (now - last_input_).toSec() > options_.input_timeout) {
       if (!stale_) {
@@ -254,7 +284,18 @@ class BrianNode {
 
   // Re-reads the parameters and the rule base; on any error the running rule
   // base stays and the response says why.
-  bool on_reload(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  bool on_reload(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      reload(req, res);
+    }
+    // the server's copy of ~threshold (outside mutex_: the server's mutex
+    // is taken first in on_reconfigure)
+    reconfigure_->updateConfig(current_config());
+    return true;
+  }
+
+  void reload(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
     try {
       NodeOptions o = read_options(pnh_);
       auto b = Brian::from_path(o.config, o.brian);
@@ -278,7 +319,6 @@ class BrianNode {
       ROS_ERROR("brian_node: %s", res.message.c_str());
     }
     diag_.force_update();
-    return true;
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
@@ -306,6 +346,7 @@ class BrianNode {
     s.add("stamp jumps back (new time base)", stamp_jumps_back_);
   }
 
+  std::mutex mutex_;  // every callback's: the reconfiguration changes the engine
   ros::NodeHandle nh_, pnh_;
   diagnostic_updater::Updater diag_;
   NodeOptions options_;
@@ -324,6 +365,8 @@ class BrianNode {
   std::uint64_t duplicate_stamps_ = 0, out_of_order_stamps_ = 0, stamp_gaps_ = 0, stamp_jumps_back_ = 0;
   std::uint64_t cycles_ = 0, dropped_ = 0, reloads_ = 0, stale_periods_ = 0;
   std::string last_reload_error_;
+  boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<mrt_brian::BrianConfig>> reconfigure_;
 };
 
 }  // namespace mrt::brian::node

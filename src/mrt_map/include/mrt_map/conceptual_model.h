@@ -122,6 +122,15 @@ struct CrispEntry {
   double min_reliability = 0.0;
 };
 
+/// What map_node's dynamic_reconfigure tunes at run time (the model file's
+/// tracker.gate, tracker.merge_gate, team.gate, team.extra_sigma).
+struct ModelTuning {
+  double gate = 9.21;         // squared Mahalanobis, > 0
+  double merge_gate = 9.21;   // squared Mahalanobis, > 0
+  double team_gate = 13.82;   // squared Mahalanobis, > 0
+  double team_extra_sigma = 0.05;  // m, >= 0
+};
+
 class ConceptualModel {
  public:
   /// Loads a model file; throws mrt::common::ParseError.
@@ -143,6 +152,13 @@ class ConceptualModel {
   const TeamOptions& team() const { return team_; }
   const WorldBounds& world() const { return world_; }
   const std::vector<CrispEntry>& crisp() const { return crisp_; }
+
+  ModelTuning tuning() const;
+  /// Replaces the tuned values; the Merger, Tracker and team fusion holding
+  /// this model read them from their next call. Throws
+  /// std::invalid_argument naming the key (as in the file) with nothing
+  /// changed when one is out of range or not finite.
+  void set_tuning(const ModelTuning& t);
 
  private:
   friend class ModelLoader;

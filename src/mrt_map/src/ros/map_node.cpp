@@ -1,6 +1,9 @@
 // map_node: MAP for one robot of a team. Wiring only: parameters -> options,
 // messages <-> the mrt_map core (see README for the API table).
+// dynamic_reconfigure (cfg/Map.cfg): the gates and the noise; one mutex
+// serializes every callback with the reconfiguration.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/Percept.h>
 #include <mrt_msgs/WorldModel.h>
@@ -10,10 +13,13 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <mutex>
 
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
+#include "mrt_map/MapConfig.h"
 #include "mrt_map/team_sender.h"
 #include "mrt_map/world_model.h"
 #include "ros/conversions.h"
@@ -21,6 +27,7 @@
 namespace {
 
 using mrt::ros_common::ParamReader;
+using mrt_map::MapConfig;
 namespace conv = mrt::map::node;
 
 struct NodeOptions {
@@ -73,9 +80,42 @@ class MapNode {
     diagnostics_.setHardwareID(opt_.core.robot);
     diagnostics_.add("MAP world model", this, &MapNode::diagnose);
     cycle_timer_ = nh.createTimer(ros::Duration(1.0 / opt_.rate), &MapNode::on_cycle, this);
+    // the gates start from the model file, the pose noise from the parameters
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<MapConfig>>(reconfigure_mutex_, pnh);
+    reconfigure_->updateConfig(current_config());
+    reconfigure_->setCallback([this](MapConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
+  MapConfig current_config() const {
+    MapConfig c = MapConfig::__getDefault__();
+    const mrt::map::ModelTuning t = model_.tuning();
+    c.gate = t.gate;
+    c.merge_gate = t.merge_gate;
+    c.team_gate = t.team_gate;
+    c.team_extra_sigma = t.team_extra_sigma;
+    c.pose_sigma = opt_.pose_sigma;
+    c.theta_sigma = opt_.theta_sigma;
+    return c;
+  }
+
+  // The model's tuned values (the Merger and Tracker read them from their
+  // next call) and the pose noise; refused values are logged and `c` gets
+  // the current ones back.
+  void on_reconfigure(MapConfig& c) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      model_.set_tuning({c.gate, c.merge_gate, c.team_gate, c.team_extra_sigma});
+    } catch (const std::invalid_argument& e) {
+      ROS_WARN("map_node: reconfiguration refused: %s", e.what());
+    }
+    if (std::isfinite(c.pose_sigma) && c.pose_sigma >= 0.0) opt_.pose_sigma = c.pose_sigma;
+    if (std::isfinite(c.theta_sigma) && c.theta_sigma >= 0.0) opt_.theta_sigma = c.theta_sigma;
+    c = current_config();
+    ROS_INFO("map_node: gate %g, merge gate %g, team gate %g, team extra sigma %g m, pose sigma %g m, %g rad", c.gate,
+             c.merge_gate, c.team_gate, c.team_extra_sigma, c.pose_sigma, c.theta_sigma);
+  }
+
   bool pose_at(const std::string& frame, const ros::Time& stamp, mrt::map::RobotPose& pose) {
     geometry_msgs::TransformStamped t;
     try {
@@ -93,6 +133,7 @@ class MapNode {
   }
 
   void on_percept(const mrt_msgs::Percept& p) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     ++percepts_;
     const std::string frame = p.header.frame_id.empty() ? opt_.base_frame : p.header.frame_id;
     mrt::map::RobotPose pose;
@@ -114,6 +155,7 @@ class MapNode {
   }
 
   void on_coordination(const mrt_msgs::CrispDataArray& a) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& d : a.data) {
       if (!std::isfinite(d.value) || !(d.reliability >= 0.0 && d.reliability <= 1.0)) {
         ++bad_parameters_;
@@ -124,6 +166,7 @@ class MapNode {
   }
 
   void on_team(const mrt_msgs::WorldModel& m) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (m.robot == opt_.core.robot || !m.local_only) return;
     std::vector<mrt::map::RemoteTrack> tracks;
     for (const auto& a : m.anchors) {
@@ -142,6 +185,7 @@ class MapNode {
   }
 
   void on_cycle(const ros::TimerEvent&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const ros::Time now = ros::Time::now();
     mrt::map::RobotPose pose;
     if (pose_at(opt_.base_frame, ros::Time(0), pose)) world_.set_robot_pose(pose, now.toSec());
@@ -188,8 +232,9 @@ class MapNode {
     s.add("coordination parameters malformed", bad_parameters_);
   }
 
+  std::mutex mutex_;  // every callback's: the reconfiguration changes model_ and opt_
   NodeOptions opt_;
-  mrt::map::ConceptualModel model_;
+  mrt::map::ConceptualModel model_;  // tuned at run time; world_ and sender_ hold it by reference
   mrt::map::WorldModel world_;
   mrt::map::TeamSender sender_;
   tf2_ros::Buffer tf_buffer_;
@@ -200,6 +245,8 @@ class MapNode {
   diagnostic_updater::Updater diagnostics_;
   std::uint64_t percepts_ = 0, no_pose_ = 0, bad_anchors_ = 0, bad_parameters_ = 0, team_models_ = 0;
   mrt::common::PerceptDrops ontology_drops_;  // objects the ontology refuses (percept_conversions.h)
+  boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<MapConfig>> reconfigure_;
 };
 
 }  // namespace

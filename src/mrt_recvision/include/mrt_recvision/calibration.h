@@ -80,6 +80,20 @@ struct Calibration {
 
 Calibration load_calibration(const std::string& path);
 
+/// The detector's thresholds recvision_node's dynamic_reconfigure tunes;
+/// pixels at the calibrated camera's resolution (scale_calibration scales
+/// them with the image, as the file's).
+struct DetectorTuning {
+  double min_distance = 0.35, max_distance = 8.0, line_max_distance = 4.0;  // m
+  int min_ball_pixels = 3, min_goal_pixels = 40, min_robot_pixels = 60;
+};
+DetectorTuning tuning_of(const DetectorOptions& o);
+/// `o` with the thresholds of `t`, checked as the file's keys are
+/// (distances finite, min_distance >= 0, max_distance > min_distance,
+/// line_max_distance > 0, pixel counts >= 1): throws std::invalid_argument
+/// naming the first bad key.
+DetectorOptions retuned(const DetectorOptions& o, const DetectorTuning& t);
+
 /// The calibration for images scaled by `scale` (the node's ~scale): the
 /// camera as OmniCamera::scaled, and the detector's thresholds in pixels scaled
 /// with the image: areas (min_ball_pixels) by s^2, counts along scan lines

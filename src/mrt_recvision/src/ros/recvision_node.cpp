@@ -6,8 +6,11 @@
 // frame_id), falling back to the calibration file's `mount:`.
 // With ~device set, the driver sub-module reads a V4L2 camera (or a video
 // file) itself and publishes its frames on camera/image_raw.
-// Topics, parameters and diagnostics: README.md.
+// Topics, parameters and diagnostics: README.md. dynamic_reconfigure
+// (cfg/RecVision.cfg): the detector's thresholds (a new detector, the mount
+// kept); one mutex serializes every callback with the reconfiguration.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <image_transport/image_transport.h>
 #include <mrt_msgs/Percept.h>
 #include <ros/ros.h>
@@ -18,11 +21,14 @@
 
 #include <chrono>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
+#include "mrt_recvision/RecVisionConfig.h"
 #include "mrt_recvision/detector.h"
 #include "mrt_recvision/frame.h"
 
@@ -112,10 +118,10 @@ class RecVisionNode {
     params.get("base_frame", base_frame_);
     // ~scale: the images are the calibrated camera's scaled by this factor
     // (mrt_sim's ~camera_scale): one calibration file, scaled in code.
-    double scale = 1.0;
-    params.get_positive("scale", scale);
-    mrt::ros_common::ParamReader::check(scale <= 4.0, "scale", "a number in (0, 4]");
-    detector_ = std::make_unique<Detector>(scale_calibration(load_calibration(calib_file), scale));  // ParseError -> run_node exits 1
+    params.get_positive("scale", scale_);
+    mrt::ros_common::ParamReader::check(scale_ <= 4.0, "scale", "a number in (0, 4]");
+    calibration_ = load_calibration(calib_file);  // ParseError -> run_node exits 1
+    detector_ = std::make_unique<Detector>(scale_calibration(calibration_, scale_));
     percepts_pub_ = nh.advertise<mrt_msgs::Percept>("percepts", 10);
     if (debug_) debug_pub_ = it_.advertise("camera/debug_image", 1);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("vision_markers", 2);
@@ -134,11 +140,54 @@ class RecVisionNode {
     }
     updater_.setHardwareID("recvision");
     updater_.add("frames", this, &RecVisionNode::diagnose);
-    diag_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { updater_.update(); });
+    diag_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      updater_.update();
+    });
+    // the thresholds start from the calibration file
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<mrt_recvision::RecVisionConfig>>(reconfigure_mutex_, pnh);
+    reconfigure_->updateConfig(current_config());
+    reconfigure_->setCallback([this](mrt_recvision::RecVisionConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
+  mrt_recvision::RecVisionConfig current_config() const {
+    mrt_recvision::RecVisionConfig c = mrt_recvision::RecVisionConfig::__getDefault__();
+    const DetectorTuning t = tuning_of(calibration_.detector);
+    c.min_distance = t.min_distance;
+    c.max_distance = t.max_distance;
+    c.line_max_distance = t.line_max_distance;
+    c.min_ball_pixels = t.min_ball_pixels;
+    c.min_goal_pixels = t.min_goal_pixels;
+    c.min_robot_pixels = t.min_robot_pixels;
+    return c;
+  }
+
+  // New thresholds: a new detector from the (unscaled) calibration with
+  // them, scaled by ~scale, at the current mount (tf's or the file's).
+  // Refused values are logged and `c` gets the current ones back.
+  void on_reconfigure(mrt_recvision::RecVisionConfig& c) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      Calibration cal = calibration_;
+      cal.detector = retuned(cal.detector, {c.min_distance, c.max_distance, c.line_max_distance, c.min_ball_pixels,
+                                            c.min_goal_pixels, c.min_robot_pixels});
+      auto fresh = std::make_unique<Detector>(scale_calibration(cal, scale_));
+      const Calibration& now = detector_->calibration();
+      fresh->set_mount(now.mount_x, now.mount_y, now.mount_yaw);
+      detector_ = std::move(fresh);
+      calibration_ = std::move(cal);
+      ROS_INFO("recvision: detector thresholds: %.3f to %.3f m (lines to %.3f m), ball %d, goal %d, robot %d px",
+               c.min_distance, c.max_distance, c.line_max_distance, c.min_ball_pixels, c.min_goal_pixels,
+               c.min_robot_pixels);
+    } catch (const std::exception& e) {
+      ROS_WARN("recvision: reconfiguration refused: %s", e.what());
+    }
+    c = current_config();
+  }
+
   void on_image(const sensor_msgs::ImageConstPtr& msg) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     Frame f;
     std::string why;
     if (msg->encoding == "rgb8" && msg->width > 0 && msg->step == msg->width * 3 &&
@@ -162,6 +211,7 @@ class RecVisionNode {
   // Device mode: one frame from the camera (blocks until it arrives),
   // published raw for recording, then processed like a topic's frame.
   void grab() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     // A video file is played once, from when someone listens to the percepts.
     if (source_->is_file() && percepts_pub_.getNumSubscribers() == 0) return;
     Frame f;
@@ -234,6 +284,7 @@ class RecVisionNode {
     if (source_) s.add("device read failures", device_failures_);
   }
 
+  std::mutex mutex_;  // every callback's: the reconfiguration replaces detector_
   image_transport::ImageTransport it_;
   image_transport::Subscriber image_sub_;
   image_transport::Publisher debug_pub_, raw_pub_;
@@ -245,11 +296,15 @@ class RecVisionNode {
   tf2_ros::TransformListener tf_listener_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diag_timer_;
+  Calibration calibration_;  // as loaded (unscaled), with the reconfigured thresholds
+  double scale_ = 1.0;       // ~scale
   std::unique_ptr<Detector> detector_;
   std::string base_frame_, robot_;
   bool use_tf_ = true, debug_ = true, mount_from_tf_ = false;
   long frames_ = 0, dropped_encoding_ = 0, dropped_size_ = 0, device_failures_ = 0;
   double last_ms_ = 0;
+  boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<mrt_recvision::RecVisionConfig>> reconfigure_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 // obstacles; what spike_node wraps.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,13 +61,23 @@ class WorldPlanner : public ObstacleSink {
   const Quadtree* quadtree() const;
   const DynamicPlanner& planner() const { return *planner_; }
   const WorldPlannerOptions& options() const { return options_; }
+  /// New options at run time (spike_node's dynamic_reconfigure): a change of
+  /// robot radius, safety distance, horizon or algorithm re-inflates the map
+  /// and rebuilds the algorithm (preprocessing again, with the new `spike`
+  /// options, which alone do not trigger it), keeping the moving obstacles;
+  /// the spacing applies to the next plan.
+  /// Returns true when it rebuilt. On an error (std::invalid_argument, as
+  /// the constructor) the planner is unchanged.
+  bool reconfigure(const WorldPlannerOptions& options);
 
  private:
   WorldPlan plan_exact(double x0, double y0, double x1, double y1);
+  std::unique_ptr<DynamicPlanner> make(const WorldPlannerOptions& options) const;
 
   WorldGrid map_;
   WorldPlannerOptions options_;
   std::unique_ptr<DynamicPlanner> planner_;
+  std::map<int, MovingObstacle> moving_;  ///< what set_obstacle wrote, cells (for a rebuild)
 };
 
 }  // namespace mrt::spike

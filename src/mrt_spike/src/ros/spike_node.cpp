@@ -4,8 +4,11 @@
 // and (optionally) MAP's world model, re-planning when the plan becomes
 // blocked, rviz markers, diagnostics. Wiring only: the algorithm is chosen
 // by ~planner (planner_factory.h), the obstacles are the core's
-// ObstacleTracker's (obstacle_tracker.h).
+// ObstacleTracker's (obstacle_tracker.h). dynamic_reconfigure (cfg/Spike.cfg):
+// the inflation (rebuilds the planner), the horizon, the re-plan rate, the
+// spacing; one mutex serializes every callback with the reconfiguration.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <mrt_msgs/Percept.h>
 #include <mrt_msgs/WorldModel.h>
@@ -19,11 +22,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
+#include "mrt_spike/SpikeConfig.h"
 #include "mrt_spike/obstacle_tracker.h"
 #include "mrt_spike/planner_factory.h"
 #include "mrt_spike/world_planner.h"
@@ -34,6 +40,7 @@ namespace {
 
 using namespace mrt::spike;
 using namespace mrt::spike::node;
+using mrt_spike::SpikeConfig;
 
 struct NodeOptions {
   std::string map;
@@ -49,7 +56,7 @@ struct NodeOptions {
 
 class SpikeNode {
  public:
-  SpikeNode(ros::NodeHandle& nh, const NodeOptions& o, const WorldGrid& map)
+  SpikeNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeOptions& o, const WorldGrid& map)
       : o_(o), planner_(map, o.planner), tracker_(o.tracker, planner_), listener_(tf_) {
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
@@ -65,6 +72,11 @@ class SpikeNode {
     ROS_INFO("spike_node: map %s, %d x %d cells of %.3f m, planner %s, %zu quadtree leaves", o.map.c_str(),
              planner_.map().grid.width(), planner_.map().grid.height(), planner_.map().frame.resolution,
              o.planner.planner.c_str(), planner_.quadtree() ? planner_.quadtree()->leaves().size() : 0);
+    // last: the callbacks above may run once ros::spin() starts, the
+    // reconfiguration from then on, starting from the validated parameters
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<SpikeConfig>>(reconfigure_mutex_, pnh);
+    reconfigure_->updateConfig(current_config());
+    reconfigure_->setCallback([this](SpikeConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
@@ -100,6 +112,7 @@ class SpikeNode {
   }
 
   bool make_plan(nav_msgs::GetPlan::Request& req, nav_msgs::GetPlan::Response& res) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     res.plan.header.frame_id = o_.frame_id;
     res.plan.header.stamp = ros::Time::now();
     geometry_msgs::PoseStamped start, goal;
@@ -144,6 +157,7 @@ class SpikeNode {
   }
 
   void on_goal(const geometry_msgs::PoseStamped& g) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (!std::isfinite(g.pose.position.x) || !std::isfinite(g.pose.position.y)) {
       ROS_WARN_THROTTLE(5, "spike_node: dropped a non-finite goal");
       return;
@@ -157,6 +171,8 @@ class SpikeNode {
 
   void on_percept(const mrt_msgs::Percept& p);
   void on_world_model(const mrt_msgs::WorldModel& m);
+  void on_reconfigure(SpikeConfig& c);
+  SpikeConfig current_config() const;
   bool to_map(const std::string& frame, mrt::common::Pose2D& t);
 
   // every plan goes through here: its time and its failure for the diagnostics
@@ -200,12 +216,14 @@ class SpikeNode {
   }
 
   void on_timer(const ros::TimerEvent&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     tracker_.expire(ros::Time::now().toSec());
     if (tracker_.take_changed()) marker_pub_.publish(obstacle_markers(planner_, o_.frame_id));
     if (has_goal_ && plan_.solved && !planner_.still_valid(plan_)) replan("plan blocked");
     diag_.update();
   }
 
+  std::mutex mutex_;  ///< every callback's: the reconfiguration changes planner_ and the timer
   NodeOptions o_;
   WorldPlanner planner_;
   ObstacleTracker tracker_;  ///< writes the obstacles into planner_
@@ -226,7 +244,51 @@ class SpikeNode {
   bool last_solved_ = true;
   double last_plan_ms_ = 0.0, max_plan_ms_ = 0.0;
   std::string last_failure_;
+  boost::recursive_mutex reconfigure_mutex_;  ///< the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<SpikeConfig>> reconfigure_;
 };
+
+SpikeConfig SpikeNode::current_config() const {
+  SpikeConfig c = SpikeConfig::__getDefault__();
+  const WorldPlannerOptions& w = planner_.options();
+  c.robot_radius = w.robot_radius;
+  c.safety_distance = w.safety_distance;
+  c.obstacle_horizon = w.horizon;
+  c.spacing = w.spacing;
+  c.replan_rate = o_.replan_rate;
+  return c;
+}
+
+// A new inflation or horizon rebuilds the planner (the moving obstacles
+// kept) and re-plans the current goal; the rate restarts the timer. Values
+// that cannot be applied are refused: `c` gets the current ones back.
+void SpikeNode::on_reconfigure(SpikeConfig& c) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  WorldPlannerOptions w = planner_.options();
+  w.robot_radius = c.robot_radius;
+  w.safety_distance = c.safety_distance;
+  w.horizon = c.obstacle_horizon;
+  w.spacing = c.spacing;
+  try {
+    if (planner_.reconfigure(w)) {
+      ROS_INFO("spike_node: reconfigured: inflation %.3f m (robot radius %.3f + safety %.3f), horizon %.2f s",
+               w.robot_radius + w.safety_distance, w.robot_radius, w.safety_distance, w.horizon);
+      marker_pub_.publish(static_markers(planner_, o_.frame_id));
+      marker_pub_.publish(obstacle_markers(planner_, o_.frame_id));
+      if (has_goal_) replan("reconfigured");
+    }
+  } catch (const std::exception& e) {
+    ROS_WARN("spike_node: reconfiguration refused: %s", e.what());
+    c = current_config();
+    return;
+  }
+  o_.planner = planner_.options();
+  if (c.replan_rate != o_.replan_rate && c.replan_rate > 0.0) {
+    o_.replan_rate = c.replan_rate;
+    timer_.setPeriod(ros::Duration(1.0 / o_.replan_rate));
+  }
+  c = current_config();
+}
 
 bool SpikeNode::to_map(const std::string& frame, mrt::common::Pose2D& pose) {
   try {
@@ -243,6 +305,7 @@ bool SpikeNode::to_map(const std::string& frame, mrt::common::Pose2D& pose) {
 // The objects the ontology accepts (the others counted), moved into the map
 // frame through tf; the tracker keeps those of the obstacle classes.
 void SpikeNode::on_percept(const mrt_msgs::Percept& p) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   mrt::common::Pose2D t;
   if (!to_map(p.header.frame_id, t)) return;
   const size_t refused = percept_drops_.total();
@@ -258,6 +321,7 @@ void SpikeNode::on_percept(const mrt_msgs::Percept& p) {
 // MAP's anchors, in the model's frame; the tracker keeps those of the
 // obstacle classes (README, world_model).
 void SpikeNode::on_world_model(const mrt_msgs::WorldModel& m) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   mrt::common::Pose2D t;
   if (!to_map(m.header.frame_id, t)) return;
   const ros::Time stamp = m.header.stamp.isZero() ? ros::Time::now() : m.header.stamp;
@@ -314,7 +378,7 @@ int main(int argc, char** argv) {
     } else {
       map = load_any_map(o.map, o.resolution);
     }
-    SpikeNode node(nh, o, map);
+    SpikeNode node(nh, pnh, o, map);
     ros::spin();
     return 0;
   });
