@@ -118,4 +118,8 @@ void tracking_benchmarks(const mrt::sim::World& world, const FeatureMap& map, do
 /// baseline on the same scans.
 void laser_benchmarks(const std::string& world_file, double seconds, int trials);
 
+/// The cost of staying ambiguous on the symmetric field, before and after
+/// carrying the modes (bench_ambiguous.cpp).
+void ambiguous_benchmarks(const mrt::sim::World& world, const FeatureMap& map);
+
 }  // namespace mrt::murea::bench

@@ -4,7 +4,8 @@
 // lattice (identical best evidence asserted) for the speed-up.
 // Usage: murea_bench [N=1000] [M=3] [world=<package>/test/data/msl_field.yaml] [tracking_s=300]
 // Then tracking, kidnapping and the MCL baseline (bench_tracking.cpp), and
-// a laser robot in the museum, MUREA and MCL on the same scans (bench_laser.cpp).
+// a laser robot in the museum, MUREA and MCL on the same scans (bench_laser.cpp),
+// the cost of staying ambiguous before and after carrying the modes (bench_ambiguous.cpp).
 // Two noise levels: "global" (1 cm + 1 %, 0.01 rad, 5 m, 2 spurious
 // points) and "global_sim_noise" (the simulator's 2 %, 0.01 rad, 6 m, 10).
 // Prints `name: value unit` lines.
@@ -168,6 +169,8 @@ int main(int argc, char** argv) {
   int laser_trials = 50;
   bool laser_only = false;
   app.add_flag("--laser-only", laser_only, "run only the laser part (bench_laser.cpp)");
+  bool ambiguous_only = false;
+  app.add_flag("--ambiguous-only", ambiguous_only, "run only the ambiguity part (bench_ambiguous.cpp)");
   app.add_option("--laser-world", laser_world, "world of the laser runs (walls), default mrt_world's museum.yaml");
   app.add_option("--laser-trials", laser_trials, "random poses of the laser global fixes (count), default 50")
       ->check(CLI::NonNegativeNumber);
@@ -181,6 +184,10 @@ int main(int argc, char** argv) {
   world.ball.enabled = false;
   const mrt::murea::FeatureMap map(world);
   const mrt::murea::Localizer loc(map, mrt::murea::SearchOptions{});  // 5 cm, 1 degree
+  if (ambiguous_only) {
+    mrt::murea::bench::ambiguous_benchmarks(world, map);
+    return 0;
+  }
 
   const std::vector<Frame> frames = run("global", world, loc, Noise{}, n);
   // The simulator's own default camera noise (2 % of the distance, 0.01
@@ -191,6 +198,7 @@ int main(int argc, char** argv) {
   window_run(map, frames);
   tracking_benchmarks(world, map, seconds);
   mrt::murea::bench::laser_benchmarks(laser_world, seconds, laser_trials);
+  mrt::murea::bench::ambiguous_benchmarks(world, map);
 
   double t_search = 0.0, t_exh = 0.0, c_search = 0.0, c_exh = 0.0;
   int identical = 0;

@@ -377,6 +377,7 @@ class MureaNode {
       s.add("max evidence", last_->max_evidence);
       s.add("ambiguous", last_->search.ambiguous);
       s.add("complete", last_->search.complete);
+      s.add("modes carried", last_->modes);
     }
     s.add("ambiguities resolved by the prior", resolved_);
   }
