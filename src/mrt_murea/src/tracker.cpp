@@ -210,17 +210,12 @@ TrackResult Tracker::modes_update(const std::vector<Percept>& percepts, double t
   pair.complete = true;
   const Hypothesis* chosen = total > 0.0 && !out.collapsed ? resolve_by_prior(pair) : nullptr;
   const bool apart = rs[b].best.evidence - rs[o].best.evidence > opt_.search.ambiguity_margin;
-  const std::size_t c = chosen == &pair.best ? b : o;
-  if (total > 0.0 && !out.collapsed && (chosen || apart) && rs[chosen ? c : b].complete) {
-    const std::size_t k = chosen ? c : b;  // commit to mode k
-    out.search = rs[k];
-    out.resolved = chosen != nullptr;
-    pose_ = rs[k].estimate.mean;
-    cov_ = rs[k].estimate.covariance;
-    out.refined = refine_pose(Localizer(map_, so[k]), percepts, false);
-    tracking_ = has_prior_ = true;
-    collapsed_frames_ = 0;
+  if (total > 0.0 && !out.collapsed && (chosen || apart)) {
+    // One mode stands out: a global search confirms it before tracking
+    // (a third pose, missed by the pair, may have as much evidence; the
+    // global search then reports the ambiguity anew). Once per decision.
     modes_.clear();
+    return global_update(percepts, total);
   } else if (out.collapsed) {
     modes_.clear();  // neither mode holds: a global search next
   } else {

@@ -44,9 +44,10 @@ struct TrackerOptions {
   double lost_growth_theta = 0.1;   // rad per frame
   /// While a global search stays ambiguous (two modes, none admitted by
   /// the prior), the modes are carried from frame to frame: odometry moves
-  /// each, a windowed search around each follows it, and the first frame
-  /// whose evidence tells them apart by more than the search's
-  /// ambiguity_margin commits to the better one. A new global search runs
+  /// each, a windowed search around each follows it, and at the first
+  /// frame whose evidence tells them apart by more than the search's
+  /// ambiguity_margin (or the prior admits one alone) a global search
+  /// decides (it commits when unambiguous). Otherwise a global search runs
   /// only every this many frames (or when both modes collapse), bounding
   /// the cost. 0: a global search at every frame (no modes carried).
   int ambiguous_global_period = 30;
