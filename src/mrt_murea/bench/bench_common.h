@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "mrt_common/angle.h"
+#include "mcl.h"
 #include "mrt_murea/localizer.h"
+#include "mrt_murea/tracker.h"
 #include "mrt_sim/sensors.h"
 #include "mrt_sim/world.h"
 
@@ -65,13 +67,59 @@ inline bool near(const Pose2D& a, const Pose2D& b) {
          std::abs(mrt::common::angle_diff(a.theta, b.theta)) <= mrt::common::deg_to_rad(10);
 }
 
+inline double mean(const std::vector<double>& v) {
+  double s = 0.0;
+  for (const double x : v) s += x;
+  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+}
+
 inline double percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5))];
 }
 
+// One recorded run: the true pose, odometry's motion from the previous
+// frame (robot frame) with its covariance, and the frame's percepts.
+struct Recording {
+  double dt = 1.0 / 30.0;
+  std::vector<Pose2D> truth;
+  std::vector<Pose2D> odom;
+  std::vector<Covariance3> odom_cov;
+  std::vector<std::vector<Percept>> percepts;
+  double max_speed = 0, max_turn = 0;
+};
+
+struct Stats {
+  double rmse_xy = 0, rmse_theta = 0, worst = 0;  // over frames from convergence on
+  std::vector<double> ms;                         // cost of every frame (wall clock)
+  std::vector<double> cpu_ms;                     // the same in the thread's CPU time
+  std::vector<double> search_ms;                  // MUREA: the search's part; MCL: frames the filter ran
+  int globals = 0;
+  double converged_s = -1;  // first time from which 1 s of estimates are all correct
+  double on_mirror = 0;     // fraction of frames on the field's half-turn mirror of the truth
+};
+
+/// Accumulates the errors of a run of estimates (from the first second
+/// of correct estimates on) into *s.
+void finish(const Recording& rec, const std::vector<Pose2D>& est, const std::vector<bool>& valid, Stats* s);
+
+/// MUREA's tracker over a recording, from the true pose or from no prior.
+Stats run_murea(const FeatureMap& map, const Recording& rec, bool from_truth, bool refine, TrackerOptions opt = {});
+
+/// The MCL baseline over the same recording (amcl's initial covariance
+/// around the true pose, or global_localization's uniform particles).
+Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth, const MclOptions& options = {});
+
 /// Tracking, kidnapping and the MCL comparison (bench_tracking.cpp).
 void tracking_benchmarks(const mrt::sim::World& world, const FeatureMap& map, double seconds);
+
+/// A laser robot in a world of walls (bench_laser.cpp): MUREA and the MCL
+/// baseline on the same scans.
+void laser_benchmarks(const std::string& world_file, double seconds, int trials);
+
+/// The cost of staying ambiguous on the symmetric field, before and after
+/// carrying the modes (bench_ambiguous.cpp).
+void ambiguous_benchmarks(const mrt::sim::World& world, const FeatureMap& map);
 
 }  // namespace mrt::murea::bench

@@ -14,17 +14,6 @@ using mrt::common::kPi;
 
 namespace {
 
-// One recorded run: the true pose, odometry's motion from the previous
-// frame (robot frame) with its covariance, and the frame's percepts.
-struct Recording {
-  double dt = 1.0 / 30.0;
-  std::vector<Pose2D> truth;
-  std::vector<Pose2D> odom;
-  std::vector<Covariance3> odom_cov;
-  std::vector<std::vector<Percept>> percepts;
-  double max_speed = 0, max_turn = 0;
-};
-
 // The robot runs a figure eight over the field (x = 6 sin(wt), y = 3
 // sin(2wt), w = 0.4 rad/s: up to 3.4 m/s), its heading the direction of
 // travel plus 0.6 sin(1.3 t) (omnidirectional base, turns up to about 2
@@ -68,15 +57,7 @@ Recording figure_eight(const mrt::sim::World& world, double seconds, double outl
   return rec;
 }
 
-struct Stats {
-  double rmse_xy = 0, rmse_theta = 0, worst = 0;  // over frames from convergence on
-  std::vector<double> ms;                         // cost of every frame (wall clock)
-  std::vector<double> cpu_ms;                     // the same in the thread's CPU time
-  std::vector<double> search_ms;                  // MUREA: the search's part; MCL: frames the filter ran
-  int globals = 0;
-  double converged_s = -1;  // first time from which 1 s of estimates are all correct
-  double on_mirror = 0;     // fraction of frames on the field's half-turn mirror of the truth
-};
+}  // namespace
 
 // Accumulates the errors of a run of estimates.
 void finish(const Recording& rec, const std::vector<Pose2D>& est, const std::vector<bool>& valid, Stats* s) {
@@ -107,8 +88,7 @@ void finish(const Recording& rec, const std::vector<Pose2D>& est, const std::vec
 }
 
 // MUREA's tracker over a recording, from the true pose or from no prior.
-Stats run_murea(const FeatureMap& map, const Recording& rec, bool from_truth, bool refine) {
-  TrackerOptions opt;
+Stats run_murea(const FeatureMap& map, const Recording& rec, bool from_truth, bool refine, TrackerOptions opt) {
   opt.refine.enabled = refine;
   Tracker tracker(map, opt);
   if (from_truth) tracker.set_pose(rec.truth[0], {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4});
@@ -133,8 +113,8 @@ Stats run_murea(const FeatureMap& map, const Recording& rec, bool from_truth, bo
 
 // The MCL baseline over the same recording (amcl's initial covariance
 // around the true pose, or global_localization's uniform particles).
-Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth) {
-  Mcl mcl(map, MclOptions{}, 4242);
+Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth, const MclOptions& options) {
+  Mcl mcl(map, options, 4242);
   if (from_truth) mcl.set_pose(rec.truth[0]);
   else mcl.global_init();
   Stats s;
@@ -151,6 +131,8 @@ Stats run_mcl(const FeatureMap& map, const Recording& rec, bool from_truth) {
   finish(rec, est, std::vector<bool>(est.size(), true), &s);
   return s;
 }
+
+namespace {
 
 void print(const std::string& name, const Stats& s) {
   double mean = 0, cpu_mean = 0;

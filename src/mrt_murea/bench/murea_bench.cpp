@@ -3,7 +3,9 @@
 // random poses; then the first M of them by exhaustive evaluation of the
 // lattice (identical best evidence asserted) for the speed-up.
 // Usage: murea_bench [N=1000] [M=3] [world=<package>/test/data/msl_field.yaml] [tracking_s=300]
-// Then tracking, kidnapping and the MCL baseline (bench_tracking.cpp).
+// Then tracking, kidnapping and the MCL baseline (bench_tracking.cpp), and
+// a laser robot in the museum, MUREA and MCL on the same scans (bench_laser.cpp),
+// the cost of staying ambiguous before and after carrying the modes (bench_ambiguous.cpp).
 // Two noise levels: "global" (1 cm + 1 %, 0.01 rad, 5 m, 2 spurious
 // points) and "global_sim_noise" (the simulator's 2 %, 0.01 rad, 6 m, 10).
 // Prints `name: value unit` lines.
@@ -163,12 +165,29 @@ int main(int argc, char** argv) {
   app.add_option("world", file, "world file (YAML), default test/data/msl_field.yaml");
   double seconds = 300.0;
   app.add_option("tracking_s", seconds, "length of the tracking runs (s), default 300")->check(CLI::PositiveNumber);
+  std::string laser_world = std::string(MRT_WORLD_WORLDS) + "/museum.yaml";
+  int laser_trials = 50;
+  bool laser_only = false;
+  app.add_flag("--laser-only", laser_only, "run only the laser part (bench_laser.cpp)");
+  bool ambiguous_only = false;
+  app.add_flag("--ambiguous-only", ambiguous_only, "run only the ambiguity part (bench_ambiguous.cpp)");
+  app.add_option("--laser-world", laser_world, "world of the laser runs (walls), default mrt_world's museum.yaml");
+  app.add_option("--laser-trials", laser_trials, "random poses of the laser global fixes (count), default 50")
+      ->check(CLI::NonNegativeNumber);
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
+  if (laser_only) {
+    mrt::murea::bench::laser_benchmarks(laser_world, seconds, laser_trials);
+    return 0;
+  }
   mrt::sim::World world = mrt::sim::load_world(file);
   world.movers.clear();
   world.ball.enabled = false;
   const mrt::murea::FeatureMap map(world);
   const mrt::murea::Localizer loc(map, mrt::murea::SearchOptions{});  // 5 cm, 1 degree
+  if (ambiguous_only) {
+    mrt::murea::bench::ambiguous_benchmarks(world, map);
+    return 0;
+  }
 
   const std::vector<Frame> frames = run("global", world, loc, Noise{}, n);
   // The simulator's own default camera noise (2 % of the distance, 0.01
@@ -178,6 +197,8 @@ int main(int argc, char** argv) {
   timeout_table(map, frames, true);
   window_run(map, frames);
   tracking_benchmarks(world, map, seconds);
+  mrt::murea::bench::laser_benchmarks(laser_world, seconds, laser_trials);
+  mrt::murea::bench::ambiguous_benchmarks(world, map);
 
   double t_search = 0.0, t_exh = 0.0, c_search = 0.0, c_exh = 0.0;
   int identical = 0;

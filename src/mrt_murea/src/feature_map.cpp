@@ -95,11 +95,23 @@ Point2D DistanceGrid::nearest(double x, double y, double* nx, double* ny) const 
   }
   const double ex = arg->b.x - arg->a.x, ey = arg->b.y - arg->a.y, len2 = ex * ex + ey * ey;
   double t = len2 > 0.0 ? ((x - arg->a.x) * ex + (y - arg->a.y) * ey) / len2 : 0.0;
+  const bool end = t <= 0.0 || t >= 1.0;
   t = std::min(1.0, std::max(0.0, t));
   const double len = std::sqrt(len2);
-  *nx = len > 0.0 ? -ey / len : 1.0;
-  *ny = len > 0.0 ? ex / len : 0.0;
-  return {arg->a.x + t * ex, arg->a.y + t * ey};
+  const Point2D c{arg->a.x + t * ex, arg->a.y + t * ey};
+  const double dx = x - c.x, dy = y - c.y, d = std::hypot(dx, dy);
+  if (end && d > 0.0) {
+    // Nearest to an end point: the distance grows along (x, y) - c (the
+    // distance function's gradient), not along the segment's normal. An
+    // occupancy map's thick wall is a stack of short runs across it, whose
+    // normals would say nothing about the distance to the wall.
+    *nx = dx / d;
+    *ny = dy / d;
+  } else {
+    *nx = len > 0.0 ? -ey / len : 1.0;
+    *ny = len > 0.0 ? ex / len : 0.0;
+  }
+  return c;
 }
 
 double DistanceGrid::at(double x, double y) const {

@@ -64,6 +64,10 @@ void Tracker::predict(const Pose2D& delta, const Covariance3& q) {
   if (!finite_pose(delta)) return;
   cov_ = compose_covariance(pose_, cov_, delta, q);
   pose_ = pose_ * delta;
+  for (Mode& m : modes_) {
+    m.covariance = compose_covariance(m.pose, m.covariance, delta, q);
+    m.pose = m.pose * delta;
+  }
 }
 
 void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
@@ -71,11 +75,13 @@ void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
   cov_ = covariance;
   tracking_ = has_prior_ = true;
   collapsed_frames_ = 0;
+  modes_.clear();
 }
 
 void Tracker::reset() {
   tracking_ = has_prior_ = false;
   collapsed_frames_ = 0;
+  modes_.clear();
 }
 
 const Hypothesis* Tracker::resolve_by_prior(const Result& r) const {
@@ -95,17 +101,21 @@ const Hypothesis* Tracker::resolve_by_prior(const Result& r) const {
   return best ? &r.best : &*r.alternative;
 }
 
-std::array<double, 4> Tracker::window() const {
-  const double sd = std::sqrt(std::max({cov_[0], cov_[4], 0.0}));
+std::array<double, 4> Tracker::window_of(const Pose2D& p, const Covariance3& c) const {
+  const double sd = std::sqrt(std::max({c[0], c[4], 0.0}));
   const double h = std::clamp(opt_.window_sigmas * sd, opt_.min_window_xy, opt_.max_window_xy);
-  return {pose_.x - h, pose_.y - h, pose_.x + h, pose_.y + h};
+  return {p.x - h, p.y - h, p.x + h, p.y + h};
 }
 
-std::array<double, 2> Tracker::heading_window() const {
-  const double sd = std::sqrt(std::max(cov_[8], 0.0));
+std::array<double, 2> Tracker::heading_window_of(const Pose2D& p, const Covariance3& c) const {
+  const double sd = std::sqrt(std::max(c[8], 0.0));
   const double h = std::clamp(opt_.window_sigmas * sd, opt_.min_window_theta, opt_.max_window_theta);
-  return {pose_.theta - h, pose_.theta + h};
+  return {p.theta - h, p.theta + h};
 }
+
+std::array<double, 4> Tracker::window() const { return window_of(pose_, cov_); }
+
+std::array<double, 2> Tracker::heading_window() const { return heading_window_of(pose_, cov_); }
 
 bool Tracker::refine_pose(const Localizer& loc, const std::vector<Percept>& percepts, bool with_prior,
                           const Pose2D* prior, const Covariance3* prior_cov) {
@@ -133,6 +143,8 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   // where odometry carried the last pose).
   const Hypothesis* chosen = resolve_by_prior(r);
   out.resolved = chosen != nullptr;
+  modes_.clear();
+  frames_since_global_ = 0;
   const bool undecided = (r.ambiguous && !chosen) || !r.complete;
   if (out.collapsed || (undecided && !opt_.track_ambiguous)) {
     // Nothing trustworthy, two modes, or not known: stay lost, keep the last
@@ -142,6 +154,9 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
       cov_[4] += opt_.lost_growth_xy * opt_.lost_growth_xy;
       cov_[8] += opt_.lost_growth_theta * opt_.lost_growth_theta;
     }
+    if (!out.collapsed && r.ambiguous && r.complete && opt_.ambiguous_global_period > 0)
+      keep_modes(loc, r, percepts);
+    out.modes = modes_.size();
     out.lost = true;
     out.pose = pose_;
     out.covariance = cov_;
@@ -168,8 +183,64 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   return out;
 }
 
+void Tracker::keep_modes(const Localizer& loc, const Result& r, const std::vector<Percept>& percepts) {
+  const Estimate alt = loc.plateau(*r.alternative, percepts);
+  modes_ = {Mode{r.estimate.mean, r.estimate.covariance}, Mode{alt.mean, alt.covariance}};
+}
+
+TrackResult Tracker::modes_update(const std::vector<Percept>& percepts, double total) {
+  TrackResult out;
+  out.mode = TrackMode::Tracking;  // windowed searches, one per mode
+  out.max_evidence = total;
+  ++frames_since_global_;
+  std::vector<SearchOptions> so(modes_.size(), opt_.search);
+  std::vector<Result> rs;
+  for (std::size_t i = 0; i < modes_.size(); ++i) {
+    so[i].region = window_of(modes_[i].pose, modes_[i].covariance);
+    so[i].heading_range = heading_window_of(modes_[i].pose, modes_[i].covariance);
+    rs.push_back(Localizer(map_, so[i]).localize(percepts));
+  }
+  const std::size_t b = rs[0].best.evidence >= rs[1].best.evidence ? 0 : 1, o = 1 - b;
+  out.search = rs[b];
+  out.collapsed = total > 0.0 && rs[b].best.evidence < opt_.collapse_fraction * total;
+  // The prior (after a loss) may admit one mode alone, as in global_update.
+  Result pair;
+  pair.best = rs[b].best;
+  pair.alternative = rs[o].best;
+  pair.complete = true;
+  const Hypothesis* chosen = total > 0.0 && !out.collapsed ? resolve_by_prior(pair) : nullptr;
+  const bool apart = rs[b].best.evidence - rs[o].best.evidence > opt_.search.ambiguity_margin;
+  if (total > 0.0 && !out.collapsed && (chosen || apart)) {
+    // One mode stands out: a global search confirms it before tracking
+    // (a third pose, missed by the pair, may have as much evidence; the
+    // global search then reports the ambiguity anew). Once per decision.
+    modes_.clear();
+    return global_update(percepts, total);
+  } else if (out.collapsed) {
+    modes_.clear();  // neither mode holds: a global search next
+  } else {
+    if (total > 0.0)  // each mode follows its windowed search
+      for (std::size_t i = 0; i < modes_.size(); ++i)
+        if (rs[i].complete) modes_[i] = {rs[i].estimate.mean, rs[i].estimate.covariance};
+    out.search.alternative = rs[o].best;
+    out.search.ambiguous = true;
+    if (has_prior_) {  // as a global search that stays ambiguous
+      cov_[0] += opt_.lost_growth_xy * opt_.lost_growth_xy;
+      cov_[4] += opt_.lost_growth_xy * opt_.lost_growth_xy;
+      cov_[8] += opt_.lost_growth_theta * opt_.lost_growth_theta;
+    }
+  }
+  out.modes = modes_.size();
+  out.lost = !tracking_;
+  out.pose = pose_;
+  out.covariance = cov_;
+  return out;
+}
+
 TrackResult Tracker::update(const std::vector<Percept>& percepts) {
   const double total = max_evidence(Localizer(map_, opt_.search), percepts);
+  if (!tracking_ && modes_.size() == 2 && frames_since_global_ + 1 < opt_.ambiguous_global_period)
+    return modes_update(percepts, total);
   if (!tracking_) return global_update(percepts, total);
   SearchOptions so = opt_.search;
   so.region = window();

@@ -9,6 +9,7 @@
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -34,8 +35,11 @@ mrt_msgs::Attribute attr(const std::string& name, double value, const std::strin
   return a;
 }
 
-// The simulator's noise-free percepts seen from `eye`, stamped `t`, in `frame`.
-mrt_msgs::Percept percepts(const mrt::sim::World& w, const Pose2D& eye, const ros::Time& t, const std::string& frame) {
+// The simulator's noise-free percepts seen from `eye`, stamped `t`, in
+// `frame`; with lines_only, only the field-line points (the field's point
+// symmetry then makes every global search ambiguous).
+mrt_msgs::Percept percepts(const mrt::sim::World& w, const Pose2D& eye, const ros::Time& t, const std::string& frame,
+                           bool lines_only = false) {
   mrt::sim::SensorsConfig cfg;
   cfg.vision_range = 6.0;
   cfg.line_point_spacing = 0.25;
@@ -43,6 +47,7 @@ mrt_msgs::Percept percepts(const mrt::sim::World& w, const Pose2D& eye, const ro
   m.header.stamp = t;
   m.header.frame_id = frame;
   for (const auto& s : mrt::sim::vision_percepts(w, {}, eye, cfg)) {
+    if (lines_only && s.membership_class != "Line") continue;
     mrt_msgs::PerceptObject o;
     o.membership_class = s.membership_class;
     o.attributes = {attr("distance", s.distance), attr("bearing", s.bearing), attr("color", 0.0, s.color)};
@@ -52,7 +57,7 @@ mrt_msgs::Percept percepts(const mrt::sim::World& w, const Pose2D& eye, const ro
 }
 
 // 40 frames at 10 Hz from (-5.5, -1, 0.5 rad) at 0.3 m/s along x; returns the bag's path.
-std::string write_bag(const std::string& name, bool odom_topic) {
+std::string write_bag(const std::string& name, bool odom_topic, bool lines_only = false) {
   const mrt::sim::World w = mrt::sim::load_world(kMap);
   const std::string path = ::testing::TempDir() + name;
   rosbag::Bag bag(path, rosbag::bagmode::Write);
@@ -76,20 +81,33 @@ std::string write_bag(const std::string& name, bool odom_topic) {
     }
     bag.write("/r1/ground_truth", t, rc::to_odometry(truth, 0, 0, 0, "map", "r1/base_link", t));
     bag.write("/r1/percepts", t,
-              odom_topic ? percepts(w, truth, t, "r1/base_link") : percepts(w, truth * mount, t, "r1/camera"));
+              odom_topic ? percepts(w, truth, t, "r1/base_link", lines_only)
+                         : percepts(w, truth * mount, t, "r1/camera", lines_only));
   }
   bag.close();
   return path;
 }
 
+// Field k (from 0) of a CSV row.
+std::string field(const std::string& row, int k) {
+  std::stringstream in(row);
+  std::string f;
+  for (int i = 0; i <= k; ++i) std::getline(in, f, ',');
+  return f;
+}
+
+const char* const kHeader = "stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode,evidence,alt_x,alt_y,alt_theta,alt_evidence";
+
 int rows(const std::string& csv, std::string* first_mode) {
   std::ifstream in(csv);
   std::string line, header;
   std::getline(in, header);
-  EXPECT_EQ(header, "stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode");
+  // The first eight columns are the contract other tools read.
+  EXPECT_EQ(header.substr(0, 44), "stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode,ev");
+  EXPECT_EQ(header, kHeader);
   int n = 0;
   while (std::getline(in, line)) {
-    if (n++ == 0) *first_mode = line.substr(line.rfind(',') + 1);
+    if (n++ == 0) *first_mode = field(line, 7);
   }
   return n;
 }
@@ -150,6 +168,61 @@ TEST(MureaPlot, DrawsTheEvaluationOfABag) {
   EXPECT_EQ(t::run("/usr/bin/python3 '" MUREA_PLOT "' --help >/dev/null 2>&1").code, 0);
 }
 
+// --initial-pose: tracking from the first frame's true pose, no global
+// search (0 global), the same 40 estimates within the same bounds as above.
+TEST(MureaEval, InitialPoseTracksFromTheStart) {
+  const std::string bag = write_bag("murea_eval_initial.bag", true), csv = bag + ".csv";
+  const auto r = mrt::common::testing::run("'" MUREA_EVAL "' --map '" + kMap + "' --bag '" + bag +
+                                           "' --robot r1 --out '" + csv + "' --timeout 0 --initial-pose -5.5 -1 0.5 2>/dev/null");
+  ASSERT_EQ(r.code, 0) << r.text;
+  std::string mode;
+  EXPECT_EQ(rows(csv, &mode), 40);
+  EXPECT_EQ(mode, "tracking");
+  EXPECT_NE(r.text.find("estimates: 40 (0 global)\nambiguous: 0\n"), std::string::npos) << r.text;
+  EXPECT_LT(figure(r.text, "rmse_xy"), 0.01) << r.text;
+}
+
+// Field-line points only: the field is symmetric under the half turn
+// (x, y, theta) -> (-x, -y, theta + pi), so without a prior every frame is
+// ambiguous: 40 rows of mode `ambiguous` whose pose and runner-up are the
+// truth (-5.5 + 0.03 i, -1, 0.5) and its mirror (5.5 - 0.03 i, 1, 0.5 + pi),
+// in either order: the pose is the plateau's mean, within the plateau's
+// box (0.3 m, 10 deg) of its mode; the runner-up a lattice pose of the
+// other mode's plateau, within the same box. With --initial-pose the prior
+// takes the true mode and every frame is tracked.
+TEST(MureaEval, AmbiguousRowsCarryTheRunnerUp) {
+  const std::string bag = write_bag("murea_eval_lines.bag", true, true), csv = bag + ".csv";
+  const std::string cmd = "'" MUREA_EVAL "' --map '" + kMap + "' --bag '" + bag + "' --robot r1 --out '" + csv +
+                          "' --timeout 0";
+  const auto r = mrt::common::testing::run(cmd + " 2>/dev/null");
+  ASSERT_EQ(r.code, 0) << r.text;
+  EXPECT_NE(r.text.find("estimates: 0 (0 global)\nambiguous: 40\n"), std::string::npos) << r.text;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const double box = 0.3, box_theta = 10 * M_PI / 180;
+  auto near = [&](double x, double y, double th, const Pose2D& p) {
+    return std::hypot(x - p.x, y - p.y) < box && std::abs(std::remainder(th - p.theta, 2 * M_PI)) < box_theta;
+  };
+  for (int i = 0; std::getline(in, line); ++i) {
+    SCOPED_TRACE(line);
+    ASSERT_LT(i, 40);
+    EXPECT_EQ(field(line, 7), "ambiguous");
+    const Pose2D truth(-5.5 + 0.03 * i, -1.0, 0.5), mirror(5.5 - 0.03 * i, 1.0, 0.5 + M_PI);
+    const double x = std::stod(field(line, 1)), y = std::stod(field(line, 2)), th = std::stod(field(line, 3));
+    ASSERT_FALSE(field(line, 9).empty()) << "no runner-up";
+    const double ax = std::stod(field(line, 9)), ay = std::stod(field(line, 10)), at = std::stod(field(line, 11));
+    EXPECT_TRUE((near(x, y, th, truth) && near(ax, ay, at, mirror)) || (near(x, y, th, mirror) && near(ax, ay, at, truth)));
+  }
+  const auto tracked = mrt::common::testing::run(cmd + " --initial-pose -5.5 -1 0.5 2>/dev/null");
+  ASSERT_EQ(tracked.code, 0) << tracked.text;
+  std::string mode;
+  EXPECT_EQ(rows(csv, &mode), 40);
+  EXPECT_EQ(mode, "tracking");
+  EXPECT_NE(tracked.text.find("estimates: 40 (0 global)\nambiguous: 0\n"), std::string::npos) << tracked.text;
+  EXPECT_LT(figure(tracked.text, "rmse_xy"), 0.01) << tracked.text;
+}
+
 TEST(MureaEval, BadInput) {
   namespace t = mrt::common::testing;
   EXPECT_EQ(t::help(MUREA_EVAL).code, 0);
@@ -162,6 +235,10 @@ TEST(MureaEval, BadInput) {
                                               "/bad_map.yaml' --bag x.bag --robot r1 --out /dev/null");
   EXPECT_EQ(bad_map.code, 2);
   EXPECT_NE(bad_map.text.find("bad_map.yaml:"), std::string::npos) << bad_map.text;
+  const auto two = t::err(MUREA_EVAL, "--map '" + kMap + "' --bag x.bag --robot r1 --out /dev/null --initial-pose 1 2");
+  EXPECT_EQ(two.code, 2);
+  const auto nan = t::err(MUREA_EVAL, "--map '" + kMap + "' --bag x.bag --robot r1 --out /dev/null --initial-pose 1 nan 0");
+  EXPECT_EQ(nan.code, 2);
 }
 
 }  // namespace

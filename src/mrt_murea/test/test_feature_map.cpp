@@ -73,3 +73,25 @@ TEST(FeatureMap, MslFieldLayers) {
   // 0.0125), 0.1875 from the yellow goal's back wall x = 9.5.
   EXPECT_NEAR(map.layer(FeatureClass::Wall, "").distance(9.31, 0.01), 0.1875, 1e-5);
 }
+
+// The nearest point and the direction the distance grows: the segment's
+// normal beside it, the direction from the end point beyond its ends
+// (3-4-5 triangles: (1.3, 0.4) is 0.5 from the end (1, 0)).
+TEST(DistanceGrid, NearestPointAndNormal) {
+  const DistanceGrid g({Segment{{0, 0}, {1, 0}}}, -1, -1, 2, 1, 0.1);
+  double nx = 0, ny = 0;
+  Point2D c = g.nearest(0.5, 0.2, &nx, &ny);
+  EXPECT_DOUBLE_EQ(c.x, 0.5);
+  EXPECT_DOUBLE_EQ(c.y, 0.0);
+  EXPECT_DOUBLE_EQ(std::abs(ny), 1.0);
+  EXPECT_DOUBLE_EQ(nx, 0.0);
+  c = g.nearest(1.3, 0.4, &nx, &ny);
+  EXPECT_DOUBLE_EQ(c.x, 1.0);
+  EXPECT_DOUBLE_EQ(c.y, 0.0);
+  EXPECT_NEAR(nx, 0.6, 1e-12);
+  EXPECT_NEAR(ny, 0.8, 1e-12);
+  c = g.nearest(-0.3, -0.4, &nx, &ny);
+  EXPECT_DOUBLE_EQ(c.x, 0.0);
+  EXPECT_NEAR(nx, -0.6, 1e-12);
+  EXPECT_NEAR(ny, -0.8, 1e-12);
+}

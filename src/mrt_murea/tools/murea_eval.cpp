@@ -1,7 +1,9 @@
 // murea_eval: runs murea_node's pipeline (percepts into base_link, odometry
 // prediction, the Tracker's update) over a recorded bag and writes one row
 // per estimate; with the robot's ground truth in the bag, prints the RMSE
-// and the worst error (see README, "murea_eval").
+// and the worst error (see README, "murea_eval"). With --initial-pose it
+// tracks from a known start (amcl's initial pose); ambiguous global
+// searches give rows too (mode `ambiguous`, with the runner-up).
 #include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -30,6 +32,9 @@ using mrt::murea::Pose2D;
 namespace rc = mrt::ros_common;
 namespace mn = mrt::murea::node;
 
+// The first eight columns are a contract other tools read; new ones go at the end.
+const char* const kHeader = "stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode,evidence,alt_x,alt_y,alt_theta,alt_evidence";
+
 struct Stamped {
   ros::Time stamp;
   Pose2D pose;
@@ -39,7 +44,9 @@ struct Stamped {
 class Evaluator {
  public:
   Evaluator(const mn::NodeOptions& o, const std::string& robot, std::ostream& out)
-      : opt_(o), map_(mrt::world::load_map_world(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {}
+      : opt_(o), map_(mrt::world::load_map_world(o.map_file)), tracker_(map_, o.tracker), ns_("/" + robot), out_(out) {
+    if (o.initial_pose) tracker_.set_pose(*o.initial_pose, o.initial_cov);
+  }
 
   void run(rosbag::Bag& bag) {
     const std::vector<std::string> topics{ns_ + "/percepts", ns_ + "/odom", ns_ + "/ground_truth", "/tf", "/tf_static"};
@@ -47,7 +54,7 @@ class Evaluator {
     for (const rosbag::ConnectionInfo* c : view.getConnections()) odom_topic_ = odom_topic_ || c->topic == ns_ + "/odom";
     const ros::Time begin = view.getBeginTime();
     mrt::cli::Progress progress("murea_eval", (view.getEndTime() - begin).toSec());
-    out_ << "stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode\n";
+    out_ << kHeader << '\n';
     for (const rosbag::MessageInstance& m : view) {
       progress.update((m.getTime() - begin).toSec());
       if (const auto tf = m.instantiate<tf2_msgs::TFMessage>()) {
@@ -80,7 +87,7 @@ class Evaluator {
 
   void summary() const {
     std::cout << "frames: " << frames_ << "\nestimates: " << estimates_.size() << " (" << globals_
-              << " global)\nskipped: " << no_odom_ << " without odometry, " << unknown_frame_
+              << " global)\nambiguous: " << ambiguous_ << "\nskipped: " << no_odom_ << " without odometry, " << unknown_frame_
               << " in an unknown frame\ndropped percepts: " << drops_.non_finite << " non-finite, "
               << drops_.non_map_class << " not a map class, " << drops_.ontology.total() << " not in the ontology\n";
     if (truth_.empty()) return;
@@ -133,14 +140,29 @@ class Evaluator {
     std::vector<mrt::murea::Percept> ps = mn::to_percepts(msg, drops_);
     mn::to_base_frame(ps, *mount);
     const mrt::murea::TrackResult r = mn::track_frame(tracker_, &last_odom_, *odom, ps, opt_);
-    if (r.lost) return;
+    const bool ambiguous = r.lost && r.search.ambiguous;
+    if (r.lost && !ambiguous) return;
     const bool global = r.mode == mrt::murea::TrackMode::Global;
-    globals_ += global ? 1 : 0;
-    estimates_.push_back({msg.header.stamp, r.pose});
-    char row[256];
-    std::snprintf(row, sizeof row, "%u.%09u,%.4f,%.4f,%.5f,%.6g,%.6g,%.6g,%s\n", msg.header.stamp.sec,
-                  msg.header.stamp.nsec, r.pose.x, r.pose.y, r.pose.theta, r.covariance[0], r.covariance[4],
-                  r.covariance[8], global ? "global" : "tracking");
+    // An ambiguous search's row: its best pose (the plateau's mean when
+    // the search completed) with the plateau's covariance.
+    const bool plateau = r.search.estimate.poses > 0;
+    const Pose2D pose = !ambiguous ? r.pose : plateau ? r.search.estimate.mean : r.search.best.pose;
+    const mrt::murea::Covariance3 cov = !ambiguous ? r.covariance : r.search.estimate.covariance;
+    if (ambiguous) {
+      ++ambiguous_;
+    } else {
+      globals_ += global ? 1 : 0;
+      estimates_.push_back({msg.header.stamp, r.pose});
+    }
+    char row[384];
+    int n = std::snprintf(row, sizeof row, "%u.%09u,%.4f,%.4f,%.5f,%.6g,%.6g,%.6g,%s,%.4f", msg.header.stamp.sec,
+                          msg.header.stamp.nsec, pose.x, pose.y, pose.theta, cov[0], cov[4], cov[8],
+                          ambiguous ? "ambiguous" : global ? "global" : "tracking", r.search.best.evidence);
+    if (const auto& alt = r.search.alternative)
+      std::snprintf(row + n, sizeof row - n, ",%.4f,%.4f,%.5f,%.4f\n", alt->pose.x, alt->pose.y, alt->pose.theta,
+                    alt->evidence);
+    else
+      std::snprintf(row + n, sizeof row - n, ",,,,\n");
     out_ << row;
   }
 
@@ -182,7 +204,7 @@ class Evaluator {
   std::optional<Pose2D> last_odom_;
   std::vector<Stamped> truth_, estimates_;
   mn::DropCounts drops_;
-  std::size_t frames_ = 0, globals_ = 0, no_odom_ = 0, unknown_frame_ = 0;
+  std::size_t frames_ = 0, globals_ = 0, ambiguous_ = 0, no_odom_ = 0, unknown_frame_ = 0;
 };
 
 }  // namespace
@@ -191,16 +213,27 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs murea_node's pipeline over a bag: one row per estimate", "murea_eval"};
   std::string bag_file, robot, out_file;
   mn::NodeOptions o;
-  std::vector<double> accuracy{0.05, mrt::common::deg_to_rad(1.0)};
+  std::vector<double> accuracy{0.05, mrt::common::deg_to_rad(1.0)}, initial;
   o.tracker.search.timeout = 0.05;
   o.tracker.search.timeout_cpu = true;  // as murea_node: CPU time of this thread
   app.add_option("--map", o.map_file, "world file or map_server map (YAML)")->required();
   app.add_option("--bag", bag_file, "bag with /NS/percepts and /NS/odom or tf (/NS/ground_truth optional)")->required();
   app.add_option("--robot", robot, "the robot's namespace NS (frames NS/odom, NS/base_link)")->required();
-  app.add_option("--out", out_file, "CSV: stamp,x,y,theta,cov_xx,cov_yy,cov_tt,mode")->required();
+  app.add_option("--out", out_file, std::string("CSV: ") + kHeader)->required();
   app.add_option("--accuracy", accuracy, "lattice spacing: XY (m) THETA (rad), default 0.05 0.0174533 (1 deg)")->expected(2);
   app.add_option("--timeout", o.tracker.search.timeout, "seconds of CPU time per search (0 = no limit), default 0.05");
+  app.add_option("--initial-pose", initial,
+                 "X Y A: track from this pose at the first frame (m, m, rad; amcl's initial pose, covariance "
+                 "0.25 m^2, 0.25 m^2, 0.0685 rad^2); default: a global search")
+      ->expected(3);
   if (const int rc = mrt::cli::parse_cli(app, argc, argv); rc >= 0) return rc;
+  if (!initial.empty()) {
+    if (!std::isfinite(initial[0]) || !std::isfinite(initial[1]) || !std::isfinite(initial[2])) {
+      std::cerr << "murea_eval: --initial-pose: expected three finite numbers X Y A\n";
+      return 2;
+    }
+    o.initial_pose = Pose2D(initial[0], initial[1], initial[2]);
+  }
   o.tracker.search.accuracy_xy = accuracy[0];
   o.tracker.search.accuracy_theta = accuracy[1];
   o.frame_prefix = robot + "/";

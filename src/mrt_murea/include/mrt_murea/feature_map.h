@@ -43,7 +43,9 @@ class DistanceGrid {
   double exact(double x, double y) const;
   /// The point closest to (x, y) of the segment nearest to the centre of
   /// the pixel containing (x, y) (of the nearest segment, outside the
-  /// grid), and that segment's unit normal in *nx, *ny. Requires !empty().
+  /// grid), and in *nx, *ny that segment's unit normal, or, when the
+  /// closest point is an end of the segment (and not (x, y) itself), the
+  /// unit vector from it to (x, y). Requires !empty().
   Point2D nearest(double x, double y, double* nx, double* ny) const;
   double slack() const { return slack_; }
   bool empty() const { return segments_.empty(); }

@@ -42,6 +42,15 @@ struct TrackerOptions {
   /// unless they are equally near. 0: the prior stays as odometry left it.
   double lost_growth_xy = 0.1;      // m per frame
   double lost_growth_theta = 0.1;   // rad per frame
+  /// While a global search stays ambiguous (two modes, none admitted by
+  /// the prior), the modes are carried from frame to frame: odometry moves
+  /// each, a windowed search around each follows it, and at the first
+  /// frame whose evidence tells them apart by more than the search's
+  /// ambiguity_margin (or the prior admits one alone) a global search
+  /// decides (it commits when unambiguous). Otherwise a global search runs
+  /// only every this many frames (or when both modes collapse), bounding
+  /// the cost. 0: a global search at every frame (no modes carried).
+  int ambiguous_global_period = 30;
   /// After each accepted search, the pose is fitted to the matched
   /// percepts by least squares, fused with odometry's prediction while
   /// tracking (refine.h); disable to keep the plateau's mean.
@@ -60,6 +69,13 @@ struct TrackResult {
   bool lost = false;          // no accepted pose after this frame (pose is the last one)
   bool refined = false;       // the pose is the least-squares fit (refine.h)
   bool resolved = false;      // an ambiguous global search resolved by the prior
+  std::size_t modes = 0;      // modes carried after this frame (0 or 2, while ambiguous)
+};
+
+/// A mode of an ambiguous localization, carried by odometry.
+struct Mode {
+  Pose2D pose;
+  Covariance3 covariance{};
 };
 
 class Tracker {
@@ -80,6 +96,8 @@ class Tracker {
   void reset();
 
   bool tracking() const { return tracking_; }
+  /// The modes carried while ambiguous (empty otherwise).
+  const std::vector<Mode>& modes() const { return modes_; }
   const Pose2D& pose() const { return pose_; }
   const Covariance3& covariance() const { return cov_; }
   const TrackerOptions& options() const { return opt_; }
@@ -89,6 +107,14 @@ class Tracker {
 
  private:
   TrackResult global_update(const std::vector<Percept>& percepts, double max_evidence);
+  /// While ambiguous: a windowed search around each carried mode; commits
+  /// to one when the evidence tells them apart.
+  TrackResult modes_update(const std::vector<Percept>& percepts, double max_evidence);
+  /// Carries the two modes of an ambiguous complete search `r`.
+  void keep_modes(const Localizer& loc, const Result& r, const std::vector<Percept>& percepts);
+  /// The search window around a pose of covariance c: [min_x, min_y, max_x, max_y], [min, max] heading.
+  std::array<double, 4> window_of(const Pose2D& p, const Covariance3& c) const;
+  std::array<double, 2> heading_window_of(const Pose2D& p, const Covariance3& c) const;
   /// Of an ambiguous complete search, the hypothesis the prior admits
   /// alone (prior_gate): &r.best or &*r.alternative; nullptr when both or neither.
   const Hypothesis* resolve_by_prior(const Result& r) const;
@@ -102,6 +128,8 @@ class Tracker {
   bool tracking_ = false;
   bool has_prior_ = false;  // pose_ and cov_ come from an accepted or set pose
   int collapsed_frames_ = 0;
+  int frames_since_global_ = 0;  // frames with modes carried since the last global search
+  std::vector<Mode> modes_;
   Pose2D pose_;
   Covariance3 cov_{};
 };

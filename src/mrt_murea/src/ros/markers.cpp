@@ -90,4 +90,14 @@ visualization_msgs::MarkerArray evidence_markers(const TrackResult& r, const Tra
   return out;
 }
 
+geometry_msgs::PoseArray particle_cloud(const TrackResult& r, const std::string& frame, const ros::Time& stamp) {
+  geometry_msgs::PoseArray out;
+  out.header.frame_id = frame;
+  out.header.stamp = stamp;
+  for (const Pose2D& q : r.search.estimate.tied) out.poses.push_back(mrt::ros_common::to_pose(q));
+  if (out.poses.empty()) out.poses.push_back(mrt::ros_common::to_pose(r.search.best.pose));
+  if (r.search.alternative) out.poses.push_back(mrt::ros_common::to_pose(r.search.alternative->pose));
+  return out;
+}
+
 }  // namespace mrt::murea::node

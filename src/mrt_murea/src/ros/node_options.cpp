@@ -6,6 +6,7 @@
 
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
+#include "mrt_murea/scan.h"
 
 namespace mrt::murea::node {
 
@@ -21,6 +22,29 @@ void read_tolerance(ParamReader& p, const std::string& name, Tolerance& t) {
   t = {v[0], v[1]};
 }
 
+// A frame id as tf2 wants it: no leading '/' (amcl strips it too).
+std::string strip_slash(std::string f) {
+  while (!f.empty() && f.front() == '/') f.erase(f.begin());
+  return f;
+}
+
+// The frames, tf_broadcast and the scan's beams, by amcl's names and
+// MUREA's older ones (aliases); amcl's name wins when both are set.
+void read_frames(ParamReader& p, NodeOptions& o) {
+  p.get("frame_prefix", o.frame_prefix);
+  const char* names[3][2] = {{"map_frame", "global_frame_id"}, {"odom_frame", "odom_frame_id"},
+                             {"base_frame", "base_frame_id"}};
+  std::string* frames[3] = {&o.map_frame, &o.odom_frame, &o.base_frame};
+  for (int i = 0; i < 3; ++i) {
+    p.get(names[i][0], *frames[i]).get(names[i][1], *frames[i]);
+    *frames[i] = strip_slash(*frames[i]);
+    ParamReader::check(!frames[i]->empty(), names[i][1], std::string("a non-empty frame id (alias ~") + names[i][0] + ")");
+  }
+  p.get("publish_tf", o.publish_tf).get("tf_broadcast", o.publish_tf);
+  p.get("scan_max_beams", o.scan_max_beams).get("laser_max_beams", o.scan_max_beams);
+  ParamReader::check(o.scan_max_beams >= 1, "laser_max_beams", "an integer >= 1 (alias ~scan_max_beams)");
+}
+
 }  // namespace
 
 NodeOptions read_options(const ros::NodeHandle& pnh) {
@@ -28,7 +52,9 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
   ParamReader p(pnh);
   SearchOptions& s = o.tracker.search;
   TrackerOptions& t = o.tracker;
-  p.require("map", o.map_file, "the path of the map (a world file or a map_server map YAML)");
+  p.get("use_map_topic", o.use_map_topic);
+  if (o.use_map_topic) p.get("map", o.map_file);  // unused: the map comes from the topic
+  else p.require("map", o.map_file, "the path of the map (a world file or a map_server map YAML), or ~use_map_topic");
   p.get_positive("accuracy_xy", s.accuracy_xy).get_positive("accuracy_theta", s.accuracy_theta);
   ParamReader::check(s.accuracy_theta <= 1.0, "accuracy_theta", "a number of radians in (0, 1]");
   s.timeout = 0.05;
@@ -59,16 +85,14 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
                      "refine_sigma_range", "[base_m, per_metre], two finite numbers >= 0, not both 0");
   f.sigma_range_base = sr[0];
   f.sigma_range_per_metre = sr[1];
-  p.get("frame_prefix", o.frame_prefix).get("map_frame", o.map_frame).get("odom_frame", o.odom_frame);
-  p.get("base_frame", o.base_frame).get("odom_topic", o.odom_topic).get("publish_tf", o.publish_tf);
-  ParamReader::check(!o.map_frame.empty(), "map_frame", "a non-empty frame id");
-  ParamReader::check(!o.odom_frame.empty(), "odom_frame", "a non-empty frame id");
-  ParamReader::check(!o.base_frame.empty(), "base_frame", "a non-empty frame id");
+  read_frames(p, o);
+  p.get("odom_topic", o.odom_topic);
   p.get_non_negative("odom_alpha_xy", o.odom_alpha_xy)
       .get_non_negative("odom_alpha_theta", o.odom_alpha_theta)
       .get_non_negative("odom_alpha_theta_xy", o.odom_alpha_theta_xy)
       .get_non_negative("transform_tolerance", o.transform_tolerance)
       .get_positive("tf_rate", o.tf_rate);
+  p.get_non_negative("ambiguous_global_period", t.ambiguous_global_period);
   p.get_non_negative("prior_gate", t.prior_gate)
       .get_non_negative("lost_growth_xy", t.lost_growth_xy)
       .get_non_negative("lost_growth_theta", t.lost_growth_theta);
@@ -109,6 +133,12 @@ std::vector<Percept> to_percepts(const mrt_msgs::Percept& msg, DropCounts& drops
     out.push_back(std::move(p));
   }
   return out;
+}
+
+std::vector<Percept> scan_to_percepts(const sensor_msgs::LaserScan& scan, int max_beams, ScanCounts& counts) {
+  ++counts.scans;
+  const ScanGeometry g{scan.angle_min, scan.angle_increment, scan.range_min, scan.range_max};
+  return scan_percepts(scan.ranges, g, max_beams, &counts.invalid);
 }
 
 Covariance3 odometry_covariance(const Pose2D& d, const NodeOptions& o) {
