@@ -59,7 +59,7 @@ done
 for topic in /robot1/tour_status /robot1/commands; do
   timeout 60 rostopic echo -n 1 "$topic" >/dev/null 2>&1 || fail "nothing published on $topic"
 done
-timeout 90 rostopic echo -n 1 --filter "' | Guide | ' in m.data" /robot1/tour_status >/dev/null 2>&1 ||
+timeout 90 rostopic echo -n 1 --filter "m.job == 'Guide'" /robot1/tour_status >/dev/null 2>&1 ||
   fail "the guide never guided (no plan from SPIKE?)"
 nodes=$(rosnode list)
 for n in /sim /robot1/guide /robot1/brian /robot1/map /visitor /followme_monitor; do

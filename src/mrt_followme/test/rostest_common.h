@@ -6,6 +6,7 @@
 #include <mrt_followme/SetTour.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <mrt_msgs/TourStatus.h>
 #include <std_msgs/String.h>
 
 #include <cstdio>
@@ -25,10 +26,10 @@ struct Summary {
 class FollowMeObserver {
  public:
   explicit FollowMeObserver(ros::NodeHandle& nh) {
-    status_ = nh.subscribe<std_msgs::String>("/robot1/tour_status", 100, [this](const std_msgs::String::ConstPtr& m) {
-      // "t 12 s | Job | next X | ..." without the time
-      const auto bar = m->data.find(" | ");
-      const std::string s = bar == std::string::npos ? m->data : m->data.substr(bar + 3);
+    status_ = nh.subscribe<mrt_msgs::TourStatus>("/robot1/tour_status", 100, [this](const mrt_msgs::TourStatus::ConstPtr& m) {
+      // "Job | next X | visited N | wanders W" (the fields but the time)
+      const std::string s = m->job + " | next " + (m->next.empty() ? "-" : m->next) + " | visited " +
+                            std::to_string(m->visited.size()) + " | wanders " + std::to_string(m->wanders);
       if (statuses.empty() || statuses.back() != s) statuses.push_back(s);
     });
     summary_ = nh.subscribe<std_msgs::String>("/robot1/tour_summary", 1, [this](const std_msgs::String::ConstPtr& m) {

@@ -7,6 +7,9 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <mrt_msgs/TourResult.h>
+#include <mrt_msgs/TourStatus.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -59,10 +62,11 @@ class Outputs {
     museum_ = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
     dynamic_ = nh.advertise<visualization_msgs::MarkerArray>("dynamic_markers", 5);
     plan_ = nh.advertise<nav_msgs::Path>(robot + "/plan", 1, true);
-    status_ = nh.advertise<std_msgs::String>(robot + "/tour_status", 5, true);
+    status_ = nh.advertise<mrt_msgs::TourStatus>(robot + "/tour_status", 5, true);
+    result_ = nh.advertise<mrt_msgs::TourResult>(robot + "/tour_result", 1, true);
     summary_ = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
     truth_ = nh.advertise<nav_msgs::Odometry>(robot + "/ground_truth", 10);
-    estimate_ = nh.advertise<nav_msgs::Odometry>(robot + "/pose", 10);
+    estimate_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(robot + "/pose", 10);
   }
 
   void museum(const FollowMeSession& s) { museum_.publish(glue::museum_markers(s, frame_)); }
@@ -75,13 +79,16 @@ class Outputs {
     clock_.publish(c);
     const auto k = s.tick();
     pose(truth_, k.truth, "/base_link_truth", now);
-    pose(estimate_, k.estimate, "/base_link", now);
+    tf_.sendTransform(mrt::ros_common::to_transform(k.estimate, frame_, robot_ + "/base_link", now));
+    geometry_msgs::PoseWithCovarianceStamped est;  // as MUREA's, in the distributed bringup
+    est.header.frame_id = frame_;
+    est.header.stamp = now;
+    est.pose.pose = mrt::ros_common::to_pose(k.estimate);
+    estimate_.publish(est);
     auto markers = glue::dynamic_markers(s, frame_);
     for (auto& m : markers.markers) m.header.stamp = now;
     dynamic_.publish(markers);
-    std_msgs::String st;
-    st.data = glue::tour_status(s);
-    status_.publish(st);
+    status_.publish(glue::tour_status_msg(s, now));
     if (s.result().plans.size() != plans_) {
       plans_ = s.result().plans.size();
       nav_msgs::Path p;
@@ -98,6 +105,14 @@ class Outputs {
   }
 
   void summary(const FollowMeSession& s) {
+    const FollowMeResult& r = s.result();
+    mrt_msgs::TourResult res;
+    res.header.stamp.fromSec(s.time());
+    res.completed = r.completed;
+    res.time = r.time;
+    res.wanders = static_cast<std::uint32_t>(r.wanders);
+    res.visited = r.visited;
+    result_.publish(res);
     std_msgs::String m;
     m.data = glue::summary(s.result());
     summary_.publish(m);
@@ -116,7 +131,7 @@ class Outputs {
   }
 
   std::string robot_, frame_;
-  ros::Publisher clock_, museum_, dynamic_, plan_, status_, summary_, truth_, estimate_;
+  ros::Publisher clock_, museum_, dynamic_, plan_, status_, result_, summary_, truth_, estimate_;
   tf2_ros::TransformBroadcaster tf_;
   std::size_t plans_ = 0;
 };

@@ -12,6 +12,8 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
+#include <mrt_msgs/TourResult.h>
+#include <mrt_msgs/TourStatus.h>
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -81,8 +83,8 @@ class GuideNode {
     door_sub_ = nh.subscribe("close_door", 5, &GuideNode::on_close_door, this);
     goal_pub_ = nh.advertise<mrt_msgs::CrispDataArray>("goal_crisp", 5);
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
-    status_pub_ = nh.advertise<std_msgs::String>("tour_status", 5, true);
-    result_pub_ = nh.advertise<std_msgs::String>("tour_result", 1, true);
+    status_pub_ = nh.advertise<mrt_msgs::TourStatus>("tour_status", 5, true);
+    result_pub_ = nh.advertise<mrt_msgs::TourResult>("tour_result", 1, true);
     tour_pub_ = nh.advertise<std_msgs::String>("tour", 1, true);
     call_pub_ = nh.advertise<std_msgs::Empty>("call_visitor", 1);
     door_pub_ = nh.advertise<mrt_msgs::Percept>("door_percepts", 5);
@@ -232,31 +234,38 @@ class GuideNode {
   void finish() {
     if (done_) return;
     done_ = true;
-    const auto& visited = guide_.visited();
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "completed %s | time %.1f | wanders %zu | visited ",
-                  visited.size() >= guide_.tour().size() ? "yes" : "no", (ros::Time::now() - started_).toSec(),
-                  guide_.wanders());
-    std_msgs::String r;
-    r.data = buf;
-    for (std::size_t i = 0; i < visited.size(); ++i) r.data += (i ? "," : "") + visited[i];
+    mrt_msgs::TourResult r;
+    r.header.stamp = ros::Time::now();
+    r.completed = guide_.visited().size() >= guide_.tour().size();
+    r.time = (r.header.stamp - started_).toSec();
+    r.wanders = static_cast<std::uint32_t>(guide_.wanders());
+    r.visited = guide_.visited();
     result_pub_.publish(r);
-    ROS_INFO("tour over: %s", r.data.c_str());
+    ROS_INFO("tour over: completed %s, %.1f s, %u wanders, %zu exhibits visited", r.completed ? "yes" : "no", r.time,
+             r.wanders, r.visited.size());
   }
 
   void publish_status(double t) {
     const auto& tour = guide_.tour();
     const std::size_t k = guide_.current();
+    mrt_msgs::TourStatus st;
+    st.header.stamp = ros::Time::now();
+    st.time = t;
+    st.job = to_string(guide_.job());
+    st.next = k < tour.size() ? tour[k].name : "";
+    st.visited = guide_.visited();
+    st.tour_size = static_cast<std::uint32_t>(tour.size());
+    st.wanders = static_cast<std::uint32_t>(guide_.wanders());
+    // the rviz line: "t 84 s | WaitVisitor | next pedestal | visited 1 | wanders 0"
     char buf[256];
-    std::snprintf(buf, sizeof buf, "t %.0f s | %s | next %s | visited %zu | wanders %zu", t, to_string(guide_.job()),
-                  k < tour.size() ? tour[k].name.c_str() : "-", guide_.visited().size(), guide_.wanders());
-    std_msgs::String st;
-    st.data = buf;
-    if (st.data != last_status_) {
+    std::snprintf(buf, sizeof buf, "t %.0f s | %s | next %s | visited %zu | wanders %zu", t, st.job.c_str(),
+                  st.next.empty() ? "-" : st.next.c_str(), st.visited.size(), guide_.wanders());
+    const std::string line = buf;
+    if (line != last_status_) {
       status_pub_.publish(st);
-      publish_progress(st.data);
+      publish_progress(line);
     }
-    last_status_ = st.data;
+    last_status_ = line;
   }
 
   /// The tour's progress in rviz: the status line above the museum, at each

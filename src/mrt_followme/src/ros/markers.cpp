@@ -157,6 +157,19 @@ std::string tour_status(const FollowMeSession& s) {
          std::to_string(g.wanders());
 }
 
+mrt_msgs::TourStatus tour_status_msg(const FollowMeSession& s, const ros::Time& stamp) {
+  const Guide& g = s.guide();
+  mrt_msgs::TourStatus m;
+  m.header.stamp = stamp;
+  m.time = s.time();
+  m.job = to_string(g.job());
+  m.next = g.current() < g.tour().size() ? g.tour()[g.current()].name : "";
+  m.visited = g.visited();
+  m.tour_size = static_cast<std::uint32_t>(g.tour().size());
+  m.wanders = static_cast<std::uint32_t>(g.wanders());
+  return m;
+}
+
 std::string summary(const FollowMeResult& r) {
   std::string visited;
   for (const auto& v : r.visited) visited += (visited.empty() ? "" : ", ") + v;

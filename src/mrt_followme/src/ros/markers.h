@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <mrt_msgs/TourStatus.h>
+#include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "mrt_followme/followme_loop.h"
@@ -15,6 +17,8 @@ visualization_msgs::MarkerArray museum_markers(const FollowMeSession& s, const s
 visualization_msgs::MarkerArray dynamic_markers(const FollowMeSession& s, const std::string& frame);
 /// One line: job, next exhibit, visited, wanders.
 std::string tour_status(const FollowMeSession& s);
+/// The same as a message (tour_status).
+mrt_msgs::TourStatus tour_status_msg(const FollowMeSession& s, const ros::Time& stamp);
 /// The summary the demo prints (the figures of followme_run).
 std::string summary(const FollowMeResult& r);
 

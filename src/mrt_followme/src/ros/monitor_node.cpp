@@ -11,13 +11,14 @@
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <mrt_msgs/TourMeasures.h>
+#include <mrt_msgs/TourResult.h>
 #include <std_msgs/String.h>
 
 #include <cmath>
 #include <deque>
 #include <iterator>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,7 @@ class Monitor {
       people_subs_.push_back(nh.subscribe<nav_msgs::Odometry>(
           n + "/ground_truth", 5, [this, n](const nav_msgs::Odometry::ConstPtr& m) { on_person(n, *m); }));
     summary_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_summary", 1, true);
-    measures_pub_ = nh.advertise<std_msgs::String>(robot + "/tour_measures", 5);
+    measures_pub_ = nh.advertise<mrt_msgs::TourMeasures>(robot + "/tour_measures", 5);
     timer_ = nh.createTimer(ros::Duration(1.0), &Monitor::report, this);
     diag_.setHardwareID("none");
     diag_.add("FollowMe monitor", this, &Monitor::diagnose);
@@ -114,15 +115,11 @@ class Monitor {
     r_.max_unseen = std::max(r_.max_unseen, t - last_seen_);
   }
 
-  void on_result(const std_msgs::String& m) {
-    // "completed yes | time 179.6 | wanders 1 | visited a,b,c"
-    std::stringstream ss(m.data);
-    std::string word, sep, completed, visited;
-    ss >> word >> completed >> sep >> word >> r_.time >> sep >> word >> r_.wanders >> sep >> word >> visited;
-    r_.completed = completed == "yes";
-    r_.visited.clear();
-    std::stringstream vs(visited);
-    for (std::string v; std::getline(vs, v, ',');) r_.visited.push_back(v);
+  void on_result(const mrt_msgs::TourResult& m) {
+    r_.completed = m.completed;
+    r_.time = m.time;
+    r_.wanders = m.wanders;
+    r_.visited = m.visited;
     std_msgs::String s;
     s.data = mrt::followme::node::summary(r_);
     summary_pub_.publish(s);
@@ -130,12 +127,12 @@ class Monitor {
   }
 
   void report(const ros::TimerEvent&) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "out_of_sight %.2f | pose_error %.3f | person_gap %.2f", r_.max_unseen,
-                  r_.max_pose_error, r_.min_person_gap);
-    std_msgs::String s;
-    s.data = buf;
-    measures_pub_.publish(s);
+    mrt_msgs::TourMeasures m;
+    m.header.stamp = ros::Time::now();
+    m.max_unseen = r_.max_unseen;
+    m.max_pose_error = r_.max_pose_error;
+    m.min_person_gap = r_.min_person_gap;
+    measures_pub_.publish(m);
     diag_.update();
   }
 
