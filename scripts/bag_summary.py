@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Prints a demo summary from a bag: topics with message counts, the final
 ground-truth pose of every robot, and the real-time factor achieved
-(simulated seconds recorded / wall seconds spent recording).
+(simulated seconds recorded / wall seconds spent recording); for the Roby
+demo (APP roby) also Roby's route: path points reached, tasks failed,
+clearance, time. Other applications print their own summaries (demo.sh).
 
-usage: bag_summary.py BAG WALL_SECONDS
+usage: bag_summary.py BAG WALL_SECONDS [APP]
 """
 import math
 import sys
@@ -12,8 +14,8 @@ import rosbag
 
 
 def roby_summary(bag, info):
-    """Roby (launch/roby.launch): path points, clearance, time. Printed only
-    when the bag holds the SCARE task status."""
+    """Roby (launch/roby.launch): path points, clearance, time, from
+    SCARE's task status."""
     status_topics = [t for t in info.topics if t.endswith("/task_status")]
     if not status_topics:
         return
@@ -43,7 +45,7 @@ def roby_summary(bag, info):
     print(f"roby: {what}: {took:.1f} s (sim time {end.header.stamp.to_sec():.1f} s)")
 
 
-def main(path, wall):
+def main(path, wall, app):
     with rosbag.Bag(path) as bag:
         info = bag.get_type_and_topic_info()
         print("topics recorded:")
@@ -60,13 +62,14 @@ def main(path, wall):
             yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
             print(f"final ground truth {topic}: x={p.x:.3f} m y={p.y:.3f} m "
                   f"theta={math.degrees(yaw):.1f} deg (t={msg.header.stamp.to_sec():.2f} s)")
-        roby_summary(bag, info)
+        if app == "roby":
+            roby_summary(bag, info)
         sim = bag.get_end_time() - bag.get_start_time()
         print(f"simulated time recorded: {sim:.2f} s in {wall:.2f} s wall: "
               f"real-time factor {sim / wall:.2f}")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    main(sys.argv[1], float(sys.argv[2]))
+    main(sys.argv[1], float(sys.argv[2]), sys.argv[3] if len(sys.argv) == 4 else "")

@@ -94,7 +94,21 @@ if [ "$NAME" = followme ]; then
   rostopic echo -n 1 /robot1/tour_summary >"$OUT/tour_summary.txt" 2>/dev/null &
   waiters+=($!)
 fi
-wait -n "${waiters[@]}" || true
+# Until the first waiter ends: a progress line every 15 s (simulated time,
+# the bag's size), so that a run of several minutes is not silent.
+next_report=$((SECONDS + 15))
+while true; do
+  running=1
+  for p in "${waiters[@]}"; do kill -0 "$p" 2>/dev/null || running=0; done
+  [ "$running" -eq 1 ] || break
+  if [ "$SECONDS" -ge "$next_report" ]; then
+    sim=$(timeout 10 rostopic echo -n 1 /clock/clock/secs 2>/dev/null | head -n 1 || true)
+    size=$(du -m "$OUT"/demo.bag* 2>/dev/null | awk '{s += $1} END {print s + 0}')
+    echo "demo: recording: simulated time ${sim:-?} s (of at most ${DURATION} s), bag ${size} MB, ${SECONDS} s since start"
+    next_report=$((SECONDS + 15))
+  fi
+  sleep 1
+done
 if kill -0 "$bag" 2>/dev/null; then
   sleep 2  # the last moments of the route
   kill -INT "$bag"
@@ -114,7 +128,7 @@ if [ "$colours" -lt 50 ]; then
 fi
 [ -s "$OUT/demo.bag" ] || { echo "demo: no bag was recorded; see $OUT/rosbag.log" >&2; exit 1; }
 
-/usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall"
+/usr/bin/python3 "$ROOT/scripts/bag_summary.py" "$OUT/demo.bag" "$wall" "$NAME"
 if [ "$NAME" = followme ]; then
   echo "FollowMe tour:"
   # the summary: exhibits visited, wanders handled, time, longest time the

@@ -14,6 +14,7 @@
 
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common/wheel_odometry.h"
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_msgs/WheelState.h"
 #include "mrt_sim/world.h"
@@ -22,7 +23,7 @@ namespace {
 
 class EncoderOdometryNode {
  public:
-  EncoderOdometryNode(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+  EncoderOdometryNode(ros::NodeHandle& nh, ros::NodeHandle& pnh) : diag_(nh, "encoder odometry", "encoders") {
     mrt::ros_common::ParamReader p(pnh);
     std::string world, robot = "robot1";
     p.require("world", world, "the mrt_sim world file of the robot's base and encoders").get("robot", robot);
@@ -35,13 +36,16 @@ class EncoderOdometryNode {
     base_frame_ = robot + "/base_link";
     pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     sub_ = nh.subscribe("wheel_state", 20, &EncoderOdometryNode::on_state, this);
+    diag_.input("wheel_state", 1.0);
   }
 
  private:
   void on_state(const mrt_msgs::WheelState& m) {
+    diag_.received("wheel_state");
     if (m.ticks.size() != odo_->geometry().wheel_count()) {  // malformed: dropped, the node goes on
       ROS_WARN_THROTTLE(5.0, "wheel_state with %zu ticks for %zu wheels: dropped", m.ticks.size(),
                         odo_->geometry().wheel_count());
+      diag_.count("malformed wheel_state dropped");
       return;
     }
     odo_->update(m.ticks);
@@ -54,6 +58,7 @@ class EncoderOdometryNode {
   ros::Publisher pub_;
   ros::Subscriber sub_;
   tf2_ros::TransformBroadcaster tf_;
+  mrt::ros_common::NodeDiagnostics diag_;
 };
 
 }  // namespace

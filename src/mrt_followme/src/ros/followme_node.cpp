@@ -20,6 +20,7 @@
 #include "markers.h"
 #include "tour_markers.h"
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_followme/SetTour.h"
 #include "mrt_followme/followme_loop.h"
@@ -161,6 +162,17 @@ int run(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
   out.museum(session);
   ros::WallTime start = ros::WallTime::now();
   bool done = false;
+  mrt::ros_common::NodeDiagnostics diag(nh, "FollowMe (in process)", "followme",
+                                        [&](diagnostic_updater::DiagnosticStatusWrapper& st) {
+                                          const auto m = glue::tour_status_msg(session, ros::Time::now());
+                                          st.add("simulated time (s)", m.time);
+                                          st.add("job", m.job);
+                                          st.add("next exhibit", m.next.empty() ? std::string("-") : m.next);
+                                          st.add("visited", std::to_string(m.visited.size()) + " of " +
+                                                                std::to_string(m.tour_size));
+                                          st.add("wanders", m.wanders);
+                                          st.add("tour over", done);
+                                        });
   while (ros::ok()) {
     ros::spinOnce();
     const bool more = session.cycle();  // false at once when the tour is over

@@ -27,6 +27,7 @@
 
 #include "mrt_common/percept.h"
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
 #include "mrt_followme/SetTour.h"
@@ -77,7 +78,10 @@ class GuideNode {
  public:
   GuideNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, Options o)
       : opt_(std::move(o)), cfg_(load_followme_config(opt_.config)), guide_(cfg_.guide, {}),
-        tracker_(cfg_.visitor.color) {
+        tracker_(cfg_.visitor.color),
+        diag_(nh, "FollowMe guide", "guide", [this](diagnostic_updater::DiagnosticStatusWrapper& st) { diagnose(st); }) {
+    diag_.input("pose", 2.0);
+    diag_.input("map_crisp", 2.0);
     pose_sub_ = nh.subscribe("pose", 5, &GuideNode::on_pose, this);
     crisp_sub_ = nh.subscribe("map_crisp", 5, &GuideNode::on_crisp, this);
     door_sub_ = nh.subscribe("close_door", 5, &GuideNode::on_close_door, this);
@@ -126,12 +130,28 @@ class GuideNode {
     return true;
   }
 
-  void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) { pose_ = mrt::ros_common::to_pose2d(m.pose.pose); }
+  void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
+    diag_.received("pose");
+    pose_ = mrt::ros_common::to_pose2d(m.pose.pose);
+  }
+
+  // The tour's state beside the inputs; WARN while a leg waits for SPIKE.
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
+    const auto& tour = guide_.tour();
+    st.add("job", to_string(guide_.job()));
+    st.add("next exhibit", guide_.current() < tour.size() ? tour[guide_.current()].name : std::string("-"));
+    st.add("visited", std::to_string(guide_.visited().size()) + " of " + std::to_string(tour.size()));
+    st.add("wanders", guide_.wanders());
+    st.add("tour over", done_);
+    if (request_) st.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for a plan from SPIKE");
+    if (!pose_) st.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "no pose yet");
+  }
 
   /// MAP's track of the visitor (VisitorX, VisitorY with MAP's reliability)
   /// feeds the visitor track the guide reads, as the camera's percepts feed
   /// it in process.
   void on_crisp(const mrt_msgs::CrispDataArray& m) {
+    diag_.received("map_crisp");
     std::map<std::string, const mrt_msgs::CrispData*> by;
     for (const auto& d : m.data) by[d.name] = &d;
     visitor_reliability_ = 0.0;
@@ -191,6 +211,7 @@ class GuideNode {
       guide_.set_plan(std::move(*path), t);
     } else {
       ROS_WARN_THROTTLE(2.0, "no plan to (%.1f, %.1f) yet", request_->x, request_->y);
+      diag_.count("plan requests unanswered");
       retry_at_ = t + 1.0;
     }
   }
@@ -317,6 +338,7 @@ class GuideNode {
   ros::ServiceClient planner_;
   ros::ServiceServer service_;
   ros::Timer timer_;
+  mrt::ros_common::NodeDiagnostics diag_;  // last: its callback reads the members above
   std::unique_ptr<mrt::followme::node::TourMarkers> markers_;
 };
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_followme/unmapped_echo.h"
 #include "mrt_sim/world.h"
@@ -21,7 +22,7 @@ namespace {
 
 class UnmappedSonar {
  public:
-  UnmappedSonar(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+  UnmappedSonar(ros::NodeHandle& nh, ros::NodeHandle& pnh) : diag_(nh, "unmapped sonar", "sonar belt") {
     mrt::ros_common::ParamReader p(pnh);
     std::string world, robot = "robot1";
     p.require("world", world, "the museum's mrt_sim world file (its walls and posts: the map)").get("robot", robot);
@@ -32,6 +33,8 @@ class UnmappedSonar {
       if (rc.name == robot) sonars_ = rc.sensors.sonars;
     if (sonars_.empty()) throw mrt::ros_common::ParamError("robot", "a robot of ~world with sonars");
     pose_sub_ = nh.subscribe("pose", 5, &UnmappedSonar::on_pose, this);
+    diag_.input("pose", 2.0);
+    diag_.input("sonar", 1.0);
     for (std::size_t i = 0; i < sonars_.size(); ++i) {
       pubs_.push_back(nh.advertise<sensor_msgs::Range>("unmapped/sonar/" + std::to_string(i), 5));
       subs_.push_back(nh.subscribe<sensor_msgs::Range>(
@@ -42,10 +45,13 @@ class UnmappedSonar {
  private:
   void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
     pose_ = mrt::ros_common::to_pose2d(m.pose.pose);
+    diag_.received("pose");
   }
 
   void on_range(std::size_t i, const sensor_msgs::Range& m) {
+    diag_.received("sonar");
     sensor_msgs::Range out = m;
+    if (!pose_) diag_.count("ranges passed on unfiltered (no pose yet)");
     if (pose_) out.range = static_cast<float>(mrt::followme::unmapped_range(known_, *pose_, sonars_[i], m.range));
     pubs_[i].publish(out);
   }
@@ -56,6 +62,7 @@ class UnmappedSonar {
   ros::Subscriber pose_sub_;
   std::vector<ros::Subscriber> subs_;
   std::vector<ros::Publisher> pubs_;
+  mrt::ros_common::NodeDiagnostics diag_;
 };
 
 }  // namespace

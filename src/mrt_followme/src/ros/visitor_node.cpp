@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mrt_common_ros/conversions.h"
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_followme/museum.h"
 #include "mrt_followme/visitor_model.h"
@@ -27,7 +28,7 @@ using namespace mrt::followme;
 
 class VisitorNode {
  public:
-  VisitorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+  VisitorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh) : diag_(nh, "FollowMe visitor", "simulated visitor") {
     mrt::ros_common::ParamReader p(pnh);
     std::string config, robot = "robot1", frame = "world";
     double rate = 10.0;
@@ -45,6 +46,8 @@ class VisitorNode {
     tour_sub_ = nh.subscribe(robot + "/tour", 1, &VisitorNode::on_tour, this);
     call_sub_ = nh.subscribe(robot + "/call_visitor", 5, &VisitorNode::on_call, this);
     goal_pub_ = nh.advertise<geometry_msgs::PointStamped>(cfg_.visitor.name + "/goal", 5);
+    diag_.input("robot ground_truth", 1.0);
+    diag_.input("visitor ground_truth", 1.0);
     start(cfg_.tour);
     timer_ = nh.createTimer(ros::Duration(1.0 / rate), &VisitorNode::cycle, this);
   }
@@ -71,8 +74,12 @@ class VisitorNode {
     }
   }
 
-  void on_robot(const nav_msgs::Odometry& m) { robot_ = mrt::ros_common::to_pose2d(m.pose.pose); }
+  void on_robot(const nav_msgs::Odometry& m) {
+    diag_.received("robot ground_truth");
+    robot_ = mrt::ros_common::to_pose2d(m.pose.pose);
+  }
   void on_self(const nav_msgs::Odometry& m) {
+    diag_.received("visitor ground_truth");
     self_ = Point2D{m.pose.pose.position.x, m.pose.pose.position.y};
   }
   void on_call(const std_msgs::Empty&) {
@@ -103,6 +110,7 @@ class VisitorNode {
   ros::Subscriber robot_sub_, self_sub_, tour_sub_, call_sub_;
   ros::Publisher goal_pub_;
   ros::Timer timer_;
+  mrt::ros_common::NodeDiagnostics diag_;
 };
 
 }  // namespace

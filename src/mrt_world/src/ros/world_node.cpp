@@ -6,6 +6,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_world/occupancy_map.h"
 #include "mrt_world/ros/occupancy_grid.h"
@@ -31,6 +32,12 @@ int main(int argc, char** argv) {
           res.map = grid;
           return true;
         });
+    mrt::ros_common::NodeDiagnostics diag(nh, "map server", "world_node", [&](auto& st) {
+      st.add("map", file);
+      st.add("cells", std::to_string(grid.info.width) + " x " + std::to_string(grid.info.height));
+      st.add("resolution (m)", grid.info.resolution);
+      st.add("frame", frame);
+    });
     ROS_INFO("world_node: %s as a %u x %u map of %.3f m in '%s'", file.c_str(), grid.info.width, grid.info.height,
              grid.info.resolution, frame.c_str());
     ros::spin();
