@@ -1,9 +1,11 @@
 // recvision_node in robot1's namespace: a ray-cast frame with a ball at
 // (2, -0.5) m from the viewpoint, which is 0.1 m ahead of base_link (tf),
-// gives a Ball percept at (2.1, -0.5) in robot1/base_link; a mono8 frame
-// and a 320x240 frame are dropped and counted in the diagnostics; the
+// gives a Ball percept at (2.1, -0.5) in robot1/base_link; a 32FC1 frame
+// (cv_bridge refuses it) and a 320x240 frame are dropped and counted in
+// the diagnostics; the
 // debug image comes out at the camera's size. Reconfigured through
 // /robot1/recvision/set_parameters, a max_distance short of the ball hides it.
+// The encodings and camera_info tests: rostest_encodings.cpp.
 #include <gtest/gtest.h>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -106,7 +108,7 @@ TEST(RecVisionNode, PerceptsDebugImageAndDroppedFrames) {
   EXPECT_TRUE(wait_for([&] { return debug > 0; }, 10.0));
   // Bad frames, once the connection is known to carry messages.
   const int before = percepts;
-  pub.publish(to_msg(cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)), "mono8"));
+  pub.publish(to_msg(cv::Mat(480, 640, CV_32FC1, cv::Scalar(0)), "32FC1"));
   pub.publish(to_msg(cv::Mat(240, 320, CV_8UC3, cv::Scalar(0)), "rgb8"));
   EXPECT_TRUE(wait_for([&] { return value_of(diag, "dropped: wrong size") == "1"; }, 10.0));
   EXPECT_EQ(value_of(diag, "dropped: wrong encoding"), "1");

@@ -3,9 +3,12 @@
 // facing +x: 2.0 m at bearing 0) within 2 % in distance and 0.02 rad in
 // bearing; the blue goal (mouth centre (-9, 0): 7.0 m at bearing pi) within
 // 0.3 m and 0.05 rad; at least 20 field-line points per message, at most
-// 2 % of them farther than 10 cm from a line of the world file.
+// 2 % of them farther than 10 cm from a line of the world file. The
+// node's check of sim_node's camera_info (mrt_omni_profile: centre, tilt
+// and mirror profile) against config/msl_omni.yaml says "matches".
 #include <gtest/gtest.h>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <mrt_msgs/Percept.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -46,7 +49,15 @@ TEST(SimCamera, PerceptsAgreeWithGroundTruth) {
   auto p_sub = nh.subscribe<mrt_msgs::Percept>("/robot1/vision_percepts", 20, [&](const mrt_msgs::PerceptConstPtr& m) {
     if (have_truth) got.push_back(*m);
   });
+  std::string info_check;
+  auto d_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArrayConstPtr& m) {
+    for (const auto& s : m->status)
+      for (const auto& kv : s.values)
+        if (kv.key == "camera_info: last check" && kv.value != "none received") info_check = kv.value;
+  });
   ASSERT_TRUE(wait_for([&] { return got.size() >= 10; }, 45.0)) << got.size() << " percept messages";
+  EXPECT_TRUE(wait_for([&] { return !info_check.empty(); }, 10.0));
+  EXPECT_EQ(info_check, "matches");
   const mrt::common::Pose2D pose = mrt::ros_common::to_pose2d(truth.pose.pose);
   EXPECT_NEAR(pose.x, -2.0, 0.01);
   EXPECT_NEAR(pose.y, 0.0, 0.01);

@@ -155,8 +155,8 @@ TEST(Cli, RunReplaysABagOfSimulatedFrames) {
       m.header.frame_id = "robot1/omni_mirror";
       cv::Mat rgb;
       renderer.render({-2.0, 0.0, 0.0}, {}, 10.0 + i, rgb);
-      if (i == 2) rgb = cv::Mat(rgb.rows, rgb.cols, CV_8UC1, cv::Scalar(0));
-      m.encoding = i == 2 ? "mono8" : "rgb8";
+      if (i == 2) rgb = cv::Mat(rgb.rows, rgb.cols, CV_32FC1, cv::Scalar(0));  // cv_bridge: not a colour format
+      m.encoding = i == 2 ? "32FC1" : "rgb8";
       m.width = rgb.cols;
       m.height = rgb.rows;
       m.step = rgb.cols * rgb.elemSize();

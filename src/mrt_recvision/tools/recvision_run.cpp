@@ -19,6 +19,7 @@
 #include "mrt_common/parse_error.h"
 #include "mrt_common/percept_csv.h"
 #include "mrt_recvision/detector.h"
+#include "../src/ros/image_decode.h"
 
 using namespace mrt::recvision;
 
@@ -56,9 +57,8 @@ int run_bag(Detector& det, const std::string& path, const std::string& topic) {
     if (!img) continue;
     Frame f;
     std::string why;
-    if (!frame_from_raw(img->encoding, int(img->width), int(img->height), img->step, img->data.data(),
-                        img->data.size(), img->header.stamp.toSec(), f, why) ||
-        !det.accepts(f, why)) {
+    bool colourless = false;
+    if (ros_layer::decode_image(img, f, colourless, why) != ros_layer::Decoded::kOk || !det.accepts(f, why)) {
       if (dropped++ == 0) std::cerr << "recvision_run: frame dropped: " << why << "\n";
       continue;
     }

@@ -22,6 +22,43 @@ struct Recorder {
   void on(const typename M::ConstPtr& m) { msgs.push_back(*m); }
 };
 
+// The camera_info's description of msl_field.yaml's camera.
+void expect_omni_profile(const sensor_msgs::CameraInfo& ci) {
+  // Not a pinhole camera (README "CameraInfo of the omnidirectional
+  // camera"): K and P hold only the mirror centre (fx = fy = 0), R the
+  // identity, binning and roi their defaults.
+  EXPECT_EQ(ci.distortion_model, "mrt_omni_profile");
+  const std::vector<double> k(ci.K.begin(), ci.K.end()), p(ci.P.begin(), ci.P.end()), r(ci.R.begin(), ci.R.end());
+  EXPECT_EQ(k, (std::vector<double>{0, 0, 320, 0, 0, 240, 0, 0, 1}));
+  EXPECT_EQ(p, (std::vector<double>{0, 0, 320, 0, 0, 0, 240, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(r, (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(ci.binning_x, 0u);
+  EXPECT_EQ(ci.roi.width, 0u);
+  // D = [roll, pitch, (theta, r) ...]: msl_field.yaml's untilted isometric
+  // mirror, viewpoint 0.7 m up (URDF), 0.02 m/px to 3 m, then 560 px/rad to
+  // 1.5 rad: the inner part's knot at atan(3 / 0.7) = 1.341564 rad is
+  // 3 / 0.02 = 150 px, the rim 150 + (1.5 - 1.341564) * 560 = 238.724 px;
+  // the floor 1 m away (theta atan(1 / 0.7)) 1 / 0.02 = 50 px out.
+  ASSERT_GE(ci.D.size(), 6u);
+  ASSERT_EQ(ci.D.size() % 2, 0u);
+  EXPECT_EQ(ci.D[0], 0.0);
+  EXPECT_EQ(ci.D[1], 0.0);
+  EXPECT_EQ(ci.D[2], 0.0);
+  EXPECT_NEAR(ci.D[ci.D.size() - 2], 1.5, 1e-9);
+  EXPECT_NEAR(ci.D.back(), 238.724, 1e-3);
+  const double t1 = std::atan2(1.0, 0.7), tb = std::atan2(3.0, 0.7);
+  bool knot = false;
+  for (std::size_t i = 4; i < ci.D.size(); i += 2) {
+    EXPECT_GT(ci.D[i], ci.D[i - 2]);
+    knot = knot || (std::abs(ci.D[i] - tb) < 1e-9 && std::abs(ci.D[i + 1] - 150.0) < 1e-6);
+    if (ci.D[i - 2] <= t1 && ci.D[i] >= t1) {
+      const double a = (t1 - ci.D[i - 2]) / (ci.D[i] - ci.D[i - 2]);
+      EXPECT_NEAR(ci.D[i - 1] + a * (ci.D[i + 1] - ci.D[i - 1]), 50.0, 0.01);
+    }
+  }
+  EXPECT_TRUE(knot);
+}
+
 }  // namespace
 
 TEST(SimCamera, ImageAndInfoAtTheConfiguredRate) {
@@ -64,9 +101,7 @@ TEST(SimCamera, ImageAndInfoAtTheConfiguredRate) {
   EXPECT_EQ(ci.header.frame_id, "robot1/omni_mirror");
   EXPECT_EQ(ci.width, 640u);
   EXPECT_EQ(ci.height, 480u);
-  EXPECT_EQ(ci.distortion_model, "omni_mirror");
-  EXPECT_EQ(ci.K[2], 320.0);
-  EXPECT_EQ(ci.K[5], 240.0);
+  expect_omni_profile(ci);
 
   // The viewpoint frame hangs off the true body at ianus3.urdf's
   // omni_mirror joint: (0, 0, 0.7).

@@ -1,7 +1,9 @@
 // recvision_node: camera images in, percepts and a debug image out.
 // Thin ROS layer over the core (mrt_recvision/detector.h): parameters are
-// read once into the calibration, each sensor_msgs/Image becomes a Frame,
-// each Detection a percept object of the ontology (to_percept_object).
+// read once into the calibration, each sensor_msgs/Image becomes a Frame
+// through cv_bridge (image_decode.h), camera/camera_info is checked against
+// the calibration (camera_info_check.h), and each Detection becomes a
+// percept object of the ontology (to_percept_object).
 // The viewpoint's mount is taken from tf (base_frame <- the image's
 // frame_id), falling back to the calibration file's `mount:`.
 // With ~device set, the driver sub-module reads a V4L2 camera (or a video
@@ -14,6 +16,7 @@
 #include <image_transport/image_transport.h>
 #include <mrt_msgs/Percept.h>
 #include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 
 #include <tf2_ros/transform_listener.h>
@@ -31,6 +34,8 @@
 #include "mrt_recvision/RecVisionConfig.h"
 #include "mrt_recvision/detector.h"
 #include "mrt_recvision/frame.h"
+#include "camera_info_check.h"
+#include "image_decode.h"
 
 namespace mrt::recvision::node {
 namespace {
@@ -132,6 +137,7 @@ class RecVisionNode {
     params.get("camera_frame", camera_frame_);
     if (device.empty()) {
       image_sub_ = it_.subscribe("camera/image_raw", 2, &RecVisionNode::on_image, this);
+      info_sub_ = nh.subscribe("camera/camera_info", 2, &RecVisionNode::on_camera_info, this);
     } else {  // the driver sub-module reads the camera (or a video file) itself
       const auto& cam = detector_->calibration().camera;
       source_ = std::make_unique<CameraSource>(device, cam.width, cam.height_px);  // throws naming the device
@@ -186,26 +192,37 @@ class RecVisionNode {
     c = current_config();
   }
 
+  // cv_bridge decodes every encoding it converts to rgb8 (image_decode.h);
+  // an rgb8 message is processed in place, read only, without a copy.
   void on_image(const sensor_msgs::ImageConstPtr& msg) {
     const std::lock_guard<std::mutex> lock(mutex_);
     Frame f;
     std::string why;
-    if (msg->encoding == "rgb8" && msg->width > 0 && msg->step == msg->width * 3 &&
-        msg->data.size() >= std::size_t(msg->step) * msg->height) {
-      // The common case (mrt_sim's camera): process the message's buffer in
-      // place, read only, instead of copying every frame.
-      f.rgb = cv::Mat(int(msg->height), int(msg->width), CV_8UC3, const_cast<std::uint8_t*>(msg->data.data()));
-      f.stamp = msg->header.stamp.toSec();
-      process(f, msg->header);
-      return;
-    }
-    if (!frame_from_raw(msg->encoding, int(msg->width), int(msg->height), msg->step, msg->data.data(),
-                        msg->data.size(), msg->header.stamp.toSec(), f, why)) {
-      ++dropped_encoding_;
+    bool colourless = false;
+    const ros_layer::Decoded d = ros_layer::decode_image(msg, f, colourless, why);
+    if (d != ros_layer::Decoded::kOk) {
+      ++(d == ros_layer::Decoded::kMalformed ? dropped_malformed_ : dropped_encoding_);
       ROS_WARN_THROTTLE(5.0, "recvision: frame dropped: %s", why.c_str());
       return;
     }
+    if (colourless) {
+      ++colourless_;
+      ROS_WARN_ONCE("recvision: %s images have no colour: only the black and white classes "
+                    "match (no ball, goals, markers nor field lines, which need green)", msg->encoding.c_str());
+    }
     process(f, msg->header);
+  }
+
+  // The camera's description against the calibration (camera_info_check.h).
+  void on_camera_info(const sensor_msgs::CameraInfoConstPtr& msg) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    using R = ros_layer::CameraInfoCheck::Result;
+    info_check_ = ros_layer::check_camera_info(*msg, detector_->calibration().camera);
+    ++infos_;
+    if (info_check_.result == R::kSizeMismatch || info_check_.result == R::kModelMismatch) {
+      ++(info_check_.result == R::kSizeMismatch ? info_size_mismatches_ : info_model_mismatches_);
+      ROS_WARN_THROTTLE(5.0, "recvision: camera_info disagrees with the calibration: %s", info_check_.why.c_str());
+    }
   }
 
   // Device mode: one frame from the camera (blocks until it arrives),
@@ -270,23 +287,37 @@ class RecVisionNode {
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
-    if (dropped_encoding_ + dropped_size_ > 0)
+    using R = ros_layer::CameraInfoCheck::Result;
+    const bool info_bad = infos_ > 0 && (info_check_.result == R::kSizeMismatch || info_check_.result == R::kModelMismatch);
+    if (dropped_encoding_ + dropped_malformed_ + dropped_size_ > 0)
       s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "frames dropped (wrong size or encoding)");
+    else if (info_bad)
+      s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "camera_info disagrees with the calibration");
     else if (frames_ == 0)
       s.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no frame yet");
     else
       s.summary(diagnostic_msgs::DiagnosticStatus::OK, "processing");
     s.add("frames processed", frames_);
+    s.add("frames without colour (mono)", colourless_);
     s.add("dropped: wrong encoding", dropped_encoding_);
+    s.add("dropped: malformed", dropped_malformed_);
     s.add("dropped: wrong size", dropped_size_);
     s.add("last processing time (ms)", last_ms_);
     s.add("mount from tf", mount_from_tf_);
     if (source_) s.add("device read failures", device_failures_);
+    s.add("camera_info received", infos_);
+    s.add("camera_info: size mismatches", info_size_mismatches_);
+    s.add("camera_info: model mismatches", info_model_mismatches_);
+    s.add("camera_info: last check", infos_ == 0 ? std::string("none received")
+                                     : info_check_.why.empty() ? std::string("matches") : info_check_.why);
   }
 
   std::mutex mutex_;  // every callback's: the reconfiguration replaces detector_
   image_transport::ImageTransport it_;
   image_transport::Subscriber image_sub_;
+  ros::Subscriber info_sub_;
+  ros_layer::CameraInfoCheck info_check_;
+  long infos_ = 0, info_size_mismatches_ = 0, info_model_mismatches_ = 0;
   image_transport::Publisher debug_pub_, raw_pub_;
   std::unique_ptr<CameraSource> source_;
   ros::WallTimer grab_timer_;
@@ -301,7 +332,8 @@ class RecVisionNode {
   std::unique_ptr<Detector> detector_;
   std::string base_frame_, robot_;
   bool use_tf_ = true, debug_ = true, mount_from_tf_ = false;
-  long frames_ = 0, dropped_encoding_ = 0, dropped_size_ = 0, device_failures_ = 0;
+  long frames_ = 0, colourless_ = 0, dropped_encoding_ = 0, dropped_malformed_ = 0, dropped_size_ = 0;
+  long device_failures_ = 0;
   double last_ms_ = 0;
   boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
   std::unique_ptr<dynamic_reconfigure::Server<mrt_recvision::RecVisionConfig>> reconfigure_;

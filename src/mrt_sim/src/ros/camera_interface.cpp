@@ -9,15 +9,21 @@ namespace mrt::sim::node {
 
 sensor_msgs::CameraInfo to_camera_info(const mrt::common::OmniCamera& c, const std::string& frame,
                                        const ros::Time& stamp) {
-  sensor_msgs::CameraInfo info;
+  sensor_msgs::CameraInfo info;  // binning 0 and roi all zeros: full resolution, no region
   info.header.stamp = stamp;
   info.header.frame_id = frame;
   info.width = static_cast<std::uint32_t>(c.width);
   info.height = static_cast<std::uint32_t>(c.height_px);
-  info.distortion_model = "omni_mirror";
-  info.K = {1.0, 0.0, c.cx, 0.0, 1.0, c.cy, 0.0, 0.0, 1.0};
-  info.R = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
-  info.P = {1.0, 0.0, c.cx, 0.0, 0.0, 1.0, c.cy, 0.0, 0.0, 0.0, 1.0, 0.0};
+  info.distortion_model = kOmniProfileModel;
+  // No pinhole focal length exists: fx = fy = 0; only the mirror centre.
+  info.K = {0.0, 0.0, c.cx, 0.0, 0.0, c.cy, 0.0, 0.0, 1.0};
+  info.R = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};  // monocular: no rectification rotation
+  info.P = {0.0, 0.0, c.cx, 0.0, 0.0, 0.0, c.cy, 0.0, 0.0, 0.0, 1.0, 0.0};
+  info.D = {c.roll, c.pitch};
+  for (const auto& [theta, radius] : c.profile.table()) {
+    info.D.push_back(theta);
+    info.D.push_back(radius);
+  }
   return info;
 }
 
