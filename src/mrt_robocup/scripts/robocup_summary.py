@@ -7,7 +7,8 @@ Reads from the bag (sim time throughout):
   /referee                       score, and when play is on (start ... stop)
   /ball/ground_truth             the true ball
   /<robot>/ground_truth          true poses (nav_msgs/Odometry)
-  /<robot>/pose                  MUREA's estimates (PoseWithCovarianceStamped)
+  /<robot>/pose                  MUREA's estimates (PoseWithCovarianceStamped; read as
+                                 msg.pose.pose, so a nav_msgs/Odometry there reads too)
   /<robot>/world_model           MAP's fused model: its Ball anchor
   /<robot>/scare/job             SCARE's job of each robot
 and prints:

@@ -44,13 +44,11 @@ catkin_install_python(PROGRAMS scripts/rtf_monitor.py scripts/robocup_summary.py
   scripts/score_seeds.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
-# The bringup's small nodes (robot.launch, robocup.launch): MUREA's pose as
-# nav_msgs/Odometry for SCARE, SCARE's world data from MAP's model, and
-# the job/role markers for rviz. (The
-# Debian system has no Python geometry_msgs / nav_msgs / visualization_msgs,
-# so topic_tools' transform and a rospy script cannot do it.)
+# The bringup's small nodes (robot.launch, robocup.launch): SCARE's world
+# data from MAP's model, and the job/role markers for rviz. (The Debian
+# system has no Python visualization_msgs, so a rospy script cannot do it.)
 find_package(visualization_msgs REQUIRED)
-foreach(n pose_odometry_node scare_world_node team_markers_node)
+foreach(n scare_world_node team_markers_node)
   add_executable(${n} src/ros/${n}.cpp)
   target_include_directories(${n} PRIVATE ${visualization_msgs_INCLUDE_DIRS})
   add_dependencies(${n} ${catkin_EXPORTED_TARGETS})

@@ -52,6 +52,8 @@ TEST(RoadMap, ParsesAndPlans) {
   // A leg through the building is refused.
   RoutePlanner bad(parse_road_map("buildings: [{name: A, box: [2, -1, 4, 1]}]\nroute: [[5, 0]]\n", "m"));
   EXPECT_THROW(bad.plan({0, 0}), std::invalid_argument);
+  EXPECT_EQ(bad.map().frame, "map");  // no `frame`: REP-105's map
+  EXPECT_EQ(m.frame, "world");        // as given
   // Re-planning after point 0 failed: from the current pose through the rest.
   r = p.replan({4.5, 0.2}, {5.0, 0.1});
   ASSERT_EQ(r.size(), 1u);

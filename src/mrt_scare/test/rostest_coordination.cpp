@@ -1,10 +1,10 @@
 // rostest: three scare_coordinator nodes (coordination.test). This node
 // plays MAP and the robots' localisation: it publishes the robots' poses
 // and the shared world model, and checks the jobs they publish.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
@@ -43,7 +43,7 @@ struct Harness {
   Harness() {
     for (int i = 0; i < 3; ++i) {
       const std::string ns = "/robot" + std::to_string(i + 1) + "/";
-      pose_pub[i] = nh.advertise<nav_msgs::Odometry>(ns + "pose", 5);
+      pose_pub[i] = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(ns + "pose", 5);
       enable_pub[i] = nh.advertise<std_msgs::Bool>(ns + "scare/enable", 5, true);
       job_sub[i] = nh.subscribe<std_msgs::String>(ns + "scare/job", 5, [this, i](const std_msgs::String::ConstPtr& m) {
         job[i] = m->data;
@@ -55,7 +55,8 @@ struct Harness {
 
   void publish() {
     for (int i = 0; i < 3; ++i) {
-      nav_msgs::Odometry o;
+      geometry_msgs::PoseWithCovarianceStamped o;
+      o.header.frame_id = "map";
       o.header.stamp = ros::Time::now();
       o.pose.pose.position.x = poses[i][0];
       o.pose.pose.position.y = poses[i][1];

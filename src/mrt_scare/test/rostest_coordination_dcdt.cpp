@@ -3,12 +3,12 @@
 // own bridge and Agora). This node plays MAP and localisation: it publishes
 // the robots' poses and the shared world data, and checks the jobs and the
 // team messages.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/WorldModel.h>
 #include <nav_msgs/GetPlan.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
@@ -40,6 +40,7 @@ struct Harness {
   // straight line.
   ros::ServiceServer planner = nh.advertiseService("/robot1/make_plan", &Harness::plan, this);
   int plans = 0;
+  std::string plan_frame;  // the coordinator's ~frame (default map, REP-105)
   std::map<std::string, double> map1_parameters;  // robot1's MAP model
   ros::Subscriber map_sub = nh.subscribe<mrt_msgs::WorldModel>(
       "/robot1/world_model", 5, [this](const mrt_msgs::WorldModel::ConstPtr& m) {
@@ -54,6 +55,7 @@ struct Harness {
 
   bool plan(nav_msgs::GetPlan::Request& req, nav_msgs::GetPlan::Response& res) {
     ++plans;
+    plan_frame = req.start.header.frame_id;
     const auto& s = req.start.pose.position;
     const auto& g = req.goal.pose.position;
     geometry_msgs::PoseStamped p = req.goal;
@@ -66,7 +68,7 @@ struct Harness {
   Harness() {
     for (int i = 0; i < 2; ++i) {
       const std::string ns = "/robot" + std::to_string(i + 1) + "/";
-      pose_pub[i] = nh.advertise<nav_msgs::Odometry>(ns + "pose", 5);
+      pose_pub[i] = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(ns + "pose", 5);
       enable_pub[i] = nh.advertise<std_msgs::Bool>(ns + "scare/enable", 5, true);
       job_sub[i] = nh.subscribe<std_msgs::String>(ns + "scare/job", 5, [this, i](const std_msgs::String::ConstPtr& m) {
         job[i] = m->data;
@@ -91,7 +93,8 @@ struct Harness {
 
   void publish() {
     for (int i = 0; i < 2; ++i) {
-      nav_msgs::Odometry o;
+      geometry_msgs::PoseWithCovarianceStamped o;
+      o.header.frame_id = "map";
       o.header.stamp = ros::Time::now();
       o.pose.pose.position.x = poses[i][0];
       o.pose.pose.position.y = poses[i][1];
@@ -163,6 +166,7 @@ TEST(CoordinationOverDcdt, TwoRobotsAgreeThroughTheirBridges) {
   // Defense 1.2 * 0.5 * 0.9 / (1 + 15.13 / 2) = 0.063 > Positioning 0.05;
   // receiver 0.9 * 0.5 / (1 + 8.485 / 2) = 0.086, passage 0.741 > 0.208.)
   EXPECT_GT(h.plans, 0);
+  EXPECT_EQ(h.plan_frame, "map");
   EXPECT_NEAR(h.robot1_defense_time, 15.1327, 1e-3);
 
   // robot1's job and the teammate to pass to reach its MAP as coordination

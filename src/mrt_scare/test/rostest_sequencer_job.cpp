@@ -1,9 +1,9 @@
 // rostest (sequencer_job.test): scare_node executes the job scare_coordinator
 // publishes, reports a hand-back, and gets another job.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/TaskStatus.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 
@@ -18,7 +18,7 @@ using mrt::ros_common::wait_for;
 TEST(SequencerJob, RunsTheJobAndHandsItBack) {
   ros::NodeHandle nh;
   std::vector<std::string> jobs, hand_backs, events;
-  std::string task;
+  std::string task, status_frame;
   double blocked = 0.0;
   auto job_sub = nh.subscribe<std_msgs::String>("/robot1/scare/job", 5,
                                                 [&](const std_msgs::String::ConstPtr& m) { jobs.push_back(m->data); });
@@ -26,14 +26,16 @@ TEST(SequencerJob, RunsTheJobAndHandsItBack) {
       "/robot1/scare/hand_back", 5, [&](const std_msgs::String::ConstPtr& m) { hand_backs.push_back(m->data); });
   auto status_sub = nh.subscribe<mrt_msgs::TaskStatus>("/robot1/task_status", 50,
                                                        [&](const mrt_msgs::TaskStatus::ConstPtr& s) {
+                                                         status_frame = s->header.frame_id;
                                                          if (s->event.empty()) return;
                                                          events.push_back(s->event);
                                                          if (s->event == "task_started") task = s->task;
                                                        });
-  auto pose_pub = nh.advertise<nav_msgs::Odometry>("/robot1/pose", 5);
+  auto pose_pub = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("/robot1/pose", 5);
   auto world_pub = nh.advertise<mrt_msgs::CrispDataArray>("/robot1/world_crisp", 5);
   auto timer = nh.createTimer(ros::Duration(0.05), [&](const ros::TimerEvent&) {
-    nav_msgs::Odometry o;
+    geometry_msgs::PoseWithCovarianceStamped o;
+    o.header.frame_id = "map";
     o.header.stamp = ros::Time::now();
     o.pose.pose.orientation.w = 1.0;
     pose_pub.publish(o);
@@ -63,6 +65,7 @@ TEST(SequencerJob, RunsTheJobAndHandsItBack) {
   bool handed = false;
   for (const auto& e : events) handed = handed || e == "handed_back";
   EXPECT_TRUE(handed);
+  EXPECT_EQ(status_frame, "map");  // ~frame's default (REP-105)
 }
 
 int main(int argc, char** argv) {

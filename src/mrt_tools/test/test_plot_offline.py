@@ -41,16 +41,24 @@ def message_class(name):
 
 
 Odometry = message_class("nav_msgs/Odometry")
+PoseWithCovarianceStamped = message_class("geometry_msgs/PoseWithCovarianceStamped")
 Twist = message_class("geometry_msgs/Twist")
 
 
-def odom(stamp, x, y, yaw):
-    m = Odometry()
+def odom(stamp, x, y, yaw, cls=Odometry):
+    """A planar pose at stamp in map as cls (Odometry, the ground truth, or
+    PoseWithCovarianceStamped, the stack's type on pose): both keep it in
+    .pose.pose."""
+    m = cls()
     m.header.stamp = rospy.Time.from_sec(stamp)
-    m.header.frame_id = "world"
+    m.header.frame_id = "map"
     m.pose.pose.position.x, m.pose.pose.position.y = x, y
     m.pose.pose.orientation.z, m.pose.pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
     return m
+
+
+def estimate(stamp, x, y, yaw):
+    return odom(stamp, x, y, yaw, PoseWithCovarianceStamped)
 
 
 def write_run_bag(path):
@@ -62,7 +70,7 @@ def write_run_bag(path):
         for k in range(101):
             t = T0 + 0.1 * k
             bag.write("/robot1/ground_truth", odom(t, 0.1 * k, 0.0, 0.0), rospy.Time.from_sec(t))
-            bag.write("/robot1/pose", odom(t, 0.1 * k + 0.3, 0.4, 0.1), rospy.Time.from_sec(t + 0.02))
+            bag.write("/robot1/pose", estimate(t, 0.1 * k + 0.3, 0.4, 0.1), rospy.Time.from_sec(t + 0.02))
             intro = BrianIntrospection()
             intro.header.stamp = rospy.Time.from_sec(t)
             intro.behaviors = [BrianBehavior(name="ReachPathPoint", level=1, cando=1.0, active=True, weight=0.75),
@@ -90,6 +98,7 @@ class Figures(unittest.TestCase):
         d = self.data
         self.assertEqual(sorted(d.truth), ["robot1"])
         self.assertEqual(sorted(d.estimates), ["/robot1/pose"])
+        self.assertEqual(d.types["/robot1/pose"], "geometry_msgs/PoseWithCovarianceStamped")
         self.assertEqual(len(d.truth["robot1"].t), 101)
         # The truth's last pose: x = 0.1 * 100 = 10 m at 10 s after the start.
         self.assertAlmostEqual(d.truth["robot1"].x[-1], 10.0, places=9)
@@ -128,6 +137,26 @@ class Figures(unittest.TestCase):
             self.assertGreater(os.path.getsize(path), 5000, path)
         # No WheelState or JointState in this bag: the wheel figure is skipped.
         self.assertFalse(os.path.exists(os.path.join(out, "run_wheels.png")))
+
+
+class OldBags(unittest.TestCase):
+    def test_odometry_on_pose_still_read(self):
+        # Bags recorded before `pose` became PoseWithCovarianceStamped hold
+        # nav_msgs/Odometry there (SCARE's inputs, the DGPS localizer): the
+        # estimate is read all the same, recognised by its type.
+        with tempfile.TemporaryDirectory() as d:
+            bag = os.path.join(d, "old.bag")
+            with rosbag.Bag(bag, "w") as b:
+                for k in range(11):
+                    t = T0 + 0.1 * k
+                    b.write("/robot1/ground_truth", odom(t, 0.1 * k, 0.0, 0.0), rospy.Time.from_sec(t))
+                    b.write("/robot1/pose", odom(t, 0.1 * k, 0.5, 0.0), rospy.Time.from_sec(t))
+            data = bag_data.read_bag(bag, progress=False)
+        self.assertEqual(data.types["/robot1/pose"], "nav_msgs/Odometry")
+        _, pos, _ = plots.pose_errors(data.estimates["/robot1/pose"], data.truth["robot1"])
+        self.assertEqual(len(pos), 11)
+        for e in pos:
+            self.assertAlmostEqual(e, 0.5, places=9)
 
 
 class Headings(unittest.TestCase):

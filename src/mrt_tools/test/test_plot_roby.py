@@ -47,6 +47,8 @@ class PlotRoby(unittest.TestCase):
         # has left the start by more than 0.5 m after 12 s.
         self.assertGreater(max(truth.x) - min(truth.x), 0.5)
         self.assertIn("/robot1/pose", data.estimates)
+        self.assertEqual(data.types["/robot1/pose"], "geometry_msgs/PoseWithCovarianceStamped")
+        self.assertEqual(data.estimates["/robot1/pose"].frame, "map")
         self.assertIn("ReachPathPoint", data.behaviours["/robot1/brian/introspection"])
 
 

@@ -83,8 +83,7 @@ class PlayerNode {
     dribble_pub_ = nh.advertise<std_msgs::Bool>("dribble", 10, true);
     crisp_pub_ = nh.advertise<mrt_msgs::CrispDataArray>("player/crisp", 5);
     job_pub_ = nh.advertise<std_msgs::String>("player/job", 5, true);
-    odom_sub_ = nh.subscribe("pose", 10, &PlayerNode::on_odom, this);
-    pose_sub_ = nh.subscribe("pose_estimate", 10, &PlayerNode::on_pose, this);
+    pose_sub_ = nh.subscribe("pose", 10, &PlayerNode::on_pose, this);
     world_sub_ = nh.subscribe("world_model", 5, &PlayerNode::on_world, this);
     crisp_sub_ = nh.subscribe("scare/crisp", 5, &PlayerNode::on_scare_crisp, this);
     team_sub_ = nh.subscribe(o_.team_topic, 50, &PlayerNode::on_team, this);
@@ -101,14 +100,13 @@ class PlayerNode {
  private:
   static double now() { return ros::Time::now().toSec(); }
 
-  void set_pose(const geometry_msgs::Pose& p) {
-    const common::Pose2D q = ros_common::to_pose2d(p);
+  // MUREA's estimate.
+  void on_pose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+    const common::Pose2D q = ros_common::to_pose2d(m->pose.pose);
     if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.theta)) return drop("pose");
     in_.pose = q;
     pose_stamp_ = now();
   }
-  void on_odom(const nav_msgs::Odometry::ConstPtr& m) { set_pose(m->pose.pose); }
-  void on_pose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) { set_pose(m->pose.pose); }
 
   void on_world(const mrt_msgs::WorldModel::ConstPtr& m) {
     in_.anchors.clear();
@@ -250,7 +248,7 @@ class PlayerNode {
   std::string job_, referee_name_;
   std::uint64_t cycles_ = 0, kicks_ = 0, kicks_held_ = 0, job_changes_ = 0, dropped_ = 0;
   ros::Publisher cmd_pub_, kick_pub_, dribble_pub_, crisp_pub_, job_pub_;
-  ros::Subscriber odom_sub_, turn_sub_, pose_sub_, world_sub_, crisp_sub_, team_sub_, referee_sub_, possession_sub_;
+  ros::Subscriber turn_sub_, pose_sub_, world_sub_, crisp_sub_, team_sub_, referee_sub_, possession_sub_;
   ros::Timer timer_;
   diagnostic_updater::Updater diag_;
 };

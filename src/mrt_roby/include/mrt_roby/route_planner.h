@@ -20,7 +20,7 @@ struct Building {
 };
 
 struct RoadMap {
-  std::string frame = "world";
+  std::string frame = "map";
   std::vector<Building> buildings;
   std::vector<Point2D> route;   // the path points, start excluded
   double clearance = 0.5;       // m a route leg must keep from buildings

@@ -2,11 +2,12 @@
 // Wiring only: the projection, the kinematics and the filter are the core's
 // DgpsLocalizer.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <mrt_msgs/WheelState.h>
-#include <tf2_ros/transform_broadcaster.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/NavSatFix.h>
+#include <tf2_ros/transform_broadcaster.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -21,13 +22,13 @@ namespace {
 using mrt::roby::DgpsLocalizer;
 
 struct Frames {
-  std::string frame = "map", child = "base_link", odom;  // odom empty: no map -> odom tf
+  std::string frame = "map", odom;  // odom empty: no map -> odom tf
 };
 
 class LocalizerNode {
  public:
   LocalizerNode(ros::NodeHandle& nh, DgpsLocalizer loc, Frames f) : loc_(std::move(loc)), f_(std::move(f)) {
-    pub_ = nh.advertise<nav_msgs::Odometry>("pose", 20);
+    pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 20);
     fix_sub_ = nh.subscribe("dgps/fix", 5, &LocalizerNode::on_fix, this);
     wheel_sub_ = nh.subscribe("wheel_state", 50, &LocalizerNode::on_wheels, this);
     if (!f_.odom.empty()) odom_sub_ = nh.subscribe("odom", 50, &LocalizerNode::on_odom, this);
@@ -69,10 +70,15 @@ class LocalizerNode {
     have_odom_ = true;
   }
 
+  // The estimate as the stack's localizers give it (MUREA too): the pose in
+  // ~frame with the filter's planar covariance (z, roll, pitch 0: not given).
   void publish(const ros::Time& t) {
-    const auto& v = loc_.twist();
-    pub_.publish(mrt::ros_common::to_odometry(loc_.pose(), v.vx, 0.0, v.omega, f_.frame, f_.child, t,
-                                              loc_.covariance()));
+    geometry_msgs::PoseWithCovarianceStamped m;
+    m.header.stamp = t;
+    m.header.frame_id = f_.frame;
+    m.pose.pose = mrt::ros_common::to_pose(loc_.pose());
+    mrt::ros_common::set_planar_covariance(loc_.covariance(), m.pose.covariance);
+    pub_.publish(m);
     if (have_odom_ && t > last_tf_) {
       const mrt::common::Pose2D map_odom = loc_.pose() * odom_pose_.inverse();
       tf_.sendTransform(mrt::ros_common::to_transform(map_odom, f_.frame, f_.odom, t));
@@ -132,7 +138,6 @@ int main(int argc, char** argv) {
         .get_positive("wheel_radius", o.wheel_radius)
         .get_positive("track", o.track)
         .get("frame", fr.frame)
-        .get("child_frame", fr.child)
         .get("odom_frame", fr.odom)
         .get_positive("sigma_gbas", o.sigma_gbas)
         .get_positive("sigma_sbas", o.sigma_sbas)

@@ -4,10 +4,10 @@
 // allocates the team from what it heard, and publishes its job (to the
 // sequencer) and the coordination crisp data (to Mr. BRIAN / MAP).
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <mrt_msgs/CoordinationParameters.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <nav_msgs/GetPlan.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
@@ -34,7 +34,7 @@ struct CoordinatorNodeOptions {
   std::string activities;           // ~activities (required)
   std::string robot_id;             // ~robot_id (required)
   double rate = 10.0;               // ~rate, Hz
-  std::string frame = "world";      // ~frame of the poses and targets
+  std::string frame = "map";        // ~frame of the poses and targets (REP-105)
   std::string team_topic = "/scare/team";
   CoordinatorOptions coordination;  // ~grace, ~drop_timeout, ~min_confidence, ~listen, ~max_time_rate
   std::string cost = "straight_line";  // ~cost: straight_line | planner
@@ -153,7 +153,7 @@ class CoordinatorNode {
     }
   }
 
-  void on_pose(const nav_msgs::Odometry& m) {
+  void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
     const Pose2D p = ros_common::to_pose2d(m.pose.pose);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return drop("a pose with non-finite values");
     pose_ = p;

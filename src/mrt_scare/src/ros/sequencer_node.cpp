@@ -91,8 +91,8 @@ void SequencerNode::apply_plan() {
   handle(seq_.set_plan(pending_, ros::Time::now().toSec(), *pose_));
 }
 
-void SequencerNode::on_pose(const nav_msgs::Odometry& o) {
-  const Pose2D p = ros_common::to_pose2d(o.pose.pose);
+void SequencerNode::on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
+  const Pose2D p = ros_common::to_pose2d(m.pose.pose);
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.theta)) {
     ++dropped_;
     ROS_WARN_THROTTLE(5, "dropped a non-finite pose");

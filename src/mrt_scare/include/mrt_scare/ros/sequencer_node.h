@@ -7,10 +7,10 @@
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/PlanRequest.h>
 #include <mrt_msgs/TaskStatus.h>
-#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
@@ -30,7 +30,7 @@ struct SequencerNodeOptions {
   std::string tasks;           // ~tasks: the task file (required)
   double rate = 10.0;          // ~rate: Hz of monitoring, in (0, 1000]
   double pose_timeout = 2.0;   // ~pose_timeout: s without a pose before monitoring stops (0 = never)
-  std::string frame = "world"; // ~frame: frame of the plan and the pose
+  std::string frame = "map";   // ~frame: frame of the plan and the pose (REP-105)
   Mode mode = Mode::kAuto;     // ~mode: auto or manual at start-up
 
   /// Reads and validates the parameters above; throws ros_common::ParamError.
@@ -53,7 +53,7 @@ class SequencerNode {
  private:
   void on_path(const nav_msgs::Path& p);
   void apply_plan();
-  void on_pose(const nav_msgs::Odometry& o);
+  void on_pose(const geometry_msgs::PoseWithCovarianceStamped& m);
   void on_mode(const std_msgs::String& m);
   void on_job(const std_msgs::String& j);
   void apply_job();
