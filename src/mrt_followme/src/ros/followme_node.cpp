@@ -29,6 +29,7 @@
 namespace {
 
 using mrt::followme::FollowMeLoopOptions;
+using mrt::followme::FollowMeResult;
 using mrt::followme::FollowMeSession;
 namespace glue = mrt::followme::node;
 
