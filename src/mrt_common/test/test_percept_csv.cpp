@@ -18,8 +18,8 @@ TEST(PerceptCsv, WriteAndReadBack) {
   write_percept_csv_row(out, "12.500000", b);
   write_percept_csv_row(out, "12.500000", l);
   write_percept_csv_row(out, "12.500000", PerceptObject("", "Ball"));  // no position: no row
-  EXPECT_EQ(out.str(),
-            "frame,class,color,distance,bearing,reliability\n"
+  EXPECT_EQ(out.str(),  // recvision_run's header (issue 14)
+            "stamp,class,color,distance,bearing,reliability\n"
             "12.500000,Ball,orange,2.1587,-0.23374,0.900\n"
             "12.500000,Line,,1.4142,0.78540,1.000\n");
   std::istringstream in(out.str() + "13,Goal,yellow,4,0.5,1\n12.500000,Wall,,nan,0,1\n");
@@ -35,8 +35,9 @@ TEST(PerceptCsv, WriteAndReadBack) {
   EXPECT_EQ(frames[1].objects[0].membership_class, "Goal");
 }
 
-// The header row is optional (the format of issue 15 had none): the same
-// objects either way.
+// The header row is optional (the format of issue 15 had none) and names
+// the first column `frame` (murea_localize) or `stamp` (recvision_run): the
+// same objects every way.
 TEST(PerceptCsv, HeaderRowOptional) {
   std::istringstream bare("# frames 1 and 2\n1,Ball,orange,2,0.5,0.9\n1,Line,,1,0,1\n2,Goal,yellow,4,-0.25,1\n");
   const auto frames = read_percept_csv(bare, "p.csv");
@@ -47,11 +48,13 @@ TEST(PerceptCsv, HeaderRowOptional) {
   EXPECT_DOUBLE_EQ(*frames[0].objects[0].number("bearing"), 0.5);
   EXPECT_DOUBLE_EQ(frames[0].objects[0].find("distance")->reliability, 0.9);
   EXPECT_DOUBLE_EQ(*frames[1].objects[0].number("bearing"), -0.25);
-  std::istringstream headed("frame,class,color,distance,bearing,reliability\n1,Ball,orange,2,0.5,0.9\n");
-  const auto again = read_percept_csv(headed, "p.csv");
-  ASSERT_EQ(again.size(), 1u);
-  EXPECT_EQ(again[0].line, 2);
-  EXPECT_DOUBLE_EQ(*again[0].objects[0].number("distance"), 2.0);
+  for (const std::string first : {"frame", "stamp"}) {
+    std::istringstream headed(first + ",class,color,distance,bearing,reliability\n1,Ball,orange,2,0.5,0.9\n");
+    const auto again = read_percept_csv(headed, "p.csv");
+    ASSERT_EQ(again.size(), 1u) << first;
+    EXPECT_EQ(again[0].line, 2);
+    EXPECT_DOUBLE_EQ(*again[0].objects[0].number("distance"), 2.0);
+  }
 }
 
 TEST(PerceptCsv, MalformedRowsNamed) {
@@ -66,9 +69,9 @@ TEST(PerceptCsv, MalformedRowsNamed) {
   };
   // A first line that is not the header is a record: a misspelt header is
   // named as such.
-  EXPECT_EQ(error("stamp,class,color,distance,bearing,reliability\n"),
-            "p.csv:1:19: expected a number in column 'distance', got 'distance' "
-            "(a header row is exactly 'frame,class,color,distance,bearing,reliability')");
+  EXPECT_EQ(error("time,class,color,distance,bearing,reliability\n"),
+            "p.csv:1:18: expected a number in column 'distance', got 'distance' "
+            "(a header row is exactly 'frame,class,color,distance,bearing,reliability', or with 'stamp' first)");
   EXPECT_NE(error("frame,class,color,distance,bearing,reliability\n1,Ball,,x,0,1\n").find("p.csv:2:9: expected a number in column 'distance'"),
             std::string::npos)
       << error("frame,class,color,distance,bearing,reliability\n1,Ball,,x,0,1\n");

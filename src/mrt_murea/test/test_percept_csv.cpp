@@ -154,22 +154,33 @@ TEST(MureaLocalize, KnownPosesFromFiles) {
 
 // The contract of issue 15: rows with no header row. room_frames.csv with
 // its header line left out gives the same estimates (all but time_ms).
+// The same estimates from rows with no header and with recvision_run's
+// header (`stamp` first, issue 14) as with `frame` first.
 TEST(MureaLocalize, ReadsRowsWithoutAHeader) {
   std::ifstream in(MRT_MUREA_DATA "/room_frames.csv");
   const std::string bare_file = ::testing::TempDir() + "room_frames_bare.csv";
-  std::ofstream bare(bare_file);
+  const std::string stamp_file = ::testing::TempDir() + "room_frames_stamp.csv";
+  std::ofstream bare(bare_file), stamped(stamp_file);
   std::string line;
   int headers = 0;
   while (std::getline(in, line)) {
-    if (line.rfind("frame,", 0) == 0) ++headers;
-    else bare << line << '\n';
+    if (line.rfind("frame,", 0) == 0) {
+      ++headers;
+      stamped << "stamp," << line.substr(6) << '\n';
+    } else {
+      bare << line << '\n';
+      stamped << line << '\n';
+    }
   }
   bare.close();
+  stamped.close();
   ASSERT_EQ(headers, 1);
   const std::string args = " --map " MRT_MUREA_DATA "/room.yaml --accuracy 0.05 0.0174533 --timeout 5 --percepts ";
   std::string with, without;
   ASSERT_EQ(run(std::string(MUREA_LOCALIZE) + args + MRT_MUREA_DATA "/room_frames.csv", &with), 0);
   ASSERT_EQ(run(std::string(MUREA_LOCALIZE) + args + bare_file, &without), 0);
+  std::string with_stamp;
+  ASSERT_EQ(run(std::string(MUREA_LOCALIZE) + args + stamp_file, &with_stamp), 0);
   auto estimates = [](const std::string& text) {
     std::istringstream lines(text);
     std::string l;
@@ -185,6 +196,7 @@ TEST(MureaLocalize, ReadsRowsWithoutAHeader) {
   const auto a = estimates(with), b = estimates(without);
   ASSERT_EQ(a.size(), 3u) << with;
   EXPECT_EQ(a, b) << with << "\n" << without;
+  EXPECT_EQ(a, estimates(with_stamp)) << with_stamp;
 }
 
 TEST(MureaLocalize, ErrorsNameFileAndLineAndExitTwo) {

@@ -66,7 +66,7 @@ TEST(Cli, RunWritesTheBallOfAnImageAsCsv) {
   std::istringstream in(r.text);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "frame,class,color,distance,bearing,reliability");  // the stack's percept CSV
+  EXPECT_EQ(line, "stamp,class,color,distance,bearing,reliability");  // the contract of issue 14
   int balls = 0;
   while (std::getline(in, line)) {
     double stamp = 0, dist = 0, bearing = 0, rel = 0;

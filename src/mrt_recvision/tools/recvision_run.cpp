@@ -2,7 +2,7 @@
 // Runs RecVision on a bag's sensor_msgs/Image messages or on image files and
 // writes every percept on stdout in the stack's percept CSV format
 // (mrt_common/percept_csv.h, what murea_localize reads):
-//   frame,class,color,distance,bearing,reliability
+//   stamp,class,color,distance,bearing,reliability
 // (frame: the message's header stamp, or the image's position in the list;
 // distance m and bearing rad in base_link, with the calibration's mount).
 #include <rosbag/bag.h>
@@ -72,7 +72,7 @@ int run_bag(Detector& det, const std::string& path, const std::string& topic) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"RecVision on a bag or on image files: percepts as CSV (frame,class,color,distance,bearing,reliability: the percept CSV murea_localize reads)",
+  CLI::App app{"RecVision on a bag or on image files: percepts as CSV (stamp,class,color,distance,bearing,reliability: the percept CSV murea_localize reads)",
                "recvision_run"};
   std::string calib, bag_path, topic;
   std::vector<std::string> images;

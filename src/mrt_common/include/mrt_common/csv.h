@@ -6,6 +6,7 @@
 // fixed columns may leave the header out (the three-argument constructor).
 #pragma once
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -41,6 +42,16 @@ class CsvReader {
   /// first line is already a record.
   CsvReader(std::istream& in, std::string file, std::vector<std::string> columns)
       : file_(std::move(file)), header_(std::move(columns)), optional_header_(true) {
+    parse(in);
+  }
+
+  /// The same, where the first column's header may also be spelt
+  /// `first_aliases` (a format two tools name differently); the reader's
+  /// column names are `columns` whichever spelling the file used.
+  CsvReader(std::istream& in, std::string file, std::vector<std::string> columns,
+            std::vector<std::string> first_aliases)
+      : file_(std::move(file)), header_(std::move(columns)), first_aliases_(std::move(first_aliases)),
+        optional_header_(true) {
     parse(in);
   }
 
@@ -115,6 +126,13 @@ class CsvReader {
     return out;
   }
 
+  bool is_header(const std::vector<std::string>& fields) const {
+    if (fields == header_) return true;
+    if (fields.empty() || fields.size() != header_.size()) return false;
+    return std::find(first_aliases_.begin(), first_aliases_.end(), fields.front()) != first_aliases_.end() &&
+           std::equal(fields.begin() + 1, fields.end(), header_.begin() + 1);
+  }
+
   void parse(std::istream& in) {
     std::string line;
     int n = 0;
@@ -122,7 +140,7 @@ class CsvReader {
       ++n;
       std::size_t first = line.find_first_not_of(" \t\r");
       if (first == std::string::npos || line[first] == '#') continue;
-      if (optional_header_ && rows_.empty() && header_line_ == 0 && split(line, nullptr) == header_) {
+      if (optional_header_ && rows_.empty() && header_line_ == 0 && is_header(split(line, nullptr))) {
         header_line_ = n;
         continue;
       }
@@ -145,6 +163,7 @@ class CsvReader {
 
   std::string file_;
   std::vector<std::string> header_;
+  std::vector<std::string> first_aliases_;
   int header_line_ = 0;
   bool optional_header_ = false;
   std::vector<CsvRow> rows_;

@@ -1,8 +1,9 @@
 // The percept CSV format of the stack (ROS-free, header-only): what
-// recvision_run writes and murea_localize reads. An optional header row
-//   frame,class,color,distance,bearing,reliability
-// (written by recvision_run; a file without it is read the same) then one
-// object per row: the frame's id (a stamp or a name), its class
+// recvision_run writes and murea_localize reads. An optional header row,
+//   stamp,class,color,distance,bearing,reliability
+// as recvision_run writes it (its contract, issue 14), or with `frame` for
+// `stamp` (murea_localize's name for the column, issue 15); a file without
+// it is read the same. Then one object per row: the frame's id (a stamp or a name), its class
 // (ontology), its colour ("" for none), distance (m) and bearing (rad) in
 // the robot's frame, reliability in (0, 1]. Rows of a frame need not be
 // adjacent; '#' lines and blank lines are skipped (mrt_common/csv.h).
@@ -30,9 +31,16 @@ inline const std::vector<std::string>& percept_csv_columns() {
   return c;
 }
 
+/// The first column's other accepted header name; the header written.
+inline const std::string& percept_csv_stamp_column() {
+  static const std::string s = "stamp";
+  return s;
+}
+
 inline void write_percept_csv_header(std::ostream& out) {
   const auto& c = percept_csv_columns();
-  for (std::size_t i = 0; i < c.size(); ++i) out << (i ? "," : "") << c[i];
+  out << percept_csv_stamp_column();
+  for (std::size_t i = 1; i < c.size(); ++i) out << "," << c[i];
   out << "\n";
 }
 
@@ -58,7 +66,7 @@ struct PerceptCsvFrame {
 /// on a malformed row: wrong field count, empty frame id, a field that is
 /// not a number. nan and inf are read as such (the consumer decides).
 inline std::vector<PerceptCsvFrame> read_percept_csv(std::istream& in, const std::string& file) {
-  const CsvReader csv(in, file, percept_csv_columns());
+  const CsvReader csv(in, file, percept_csv_columns(), {percept_csv_stamp_column()});
   // Without a header row, a bad first row may be a misspelt header: say so.
   const int first_line = csv.has_header_row() || csv.rows().empty() ? -1 : csv.rows().front().line;
   std::string header;
@@ -71,7 +79,9 @@ inline std::vector<PerceptCsvFrame> read_percept_csv(std::istream& in, const std
     if (s.empty() || *end != '\0' || (errno == ERANGE && std::isfinite(v) && v != 0.0))
       throw ParseError(file, row.line, row.columns[col],
                        "expected a number in column '" + percept_csv_columns()[col] + "', got '" + s + "'" +
-                           (row.line == first_line ? " (a header row is exactly '" + header + "')" : ""));
+                           (row.line == first_line ? " (a header row is exactly '" + header + "', or with '" +
+                                                           percept_csv_stamp_column() + "' first)"
+                                                     : ""));
     return v;
   };
   std::vector<PerceptCsvFrame> frames;

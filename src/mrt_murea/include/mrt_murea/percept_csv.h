@@ -27,8 +27,9 @@ struct PerceptFrame {
 };
 
 /// Reads the stack's percept CSV (mrt_common/percept_csv.h: rows
-/// `frame,class,color,distance,bearing,reliability`, header required,
-/// exactly these columns; what recvision_run writes). Rows of a frame need not be adjacent;
+/// `frame,class,color,distance,bearing,reliability`, exactly these
+/// columns, a header row optional, its first column `frame` or `stamp`:
+/// what recvision_run writes). Rows of a frame need not be adjacent;
 /// frames come out in order of first appearance. Throws
 /// mrt::common::ParseError (file:line:column) on a malformed row: wrong
 /// field count, empty frame, a field that is not a number. Percepts that
