@@ -56,21 +56,16 @@ BaseParams load_base(ParamReader& p) {
   std::string type;
   p.get("base/type", type);
   if (nh.hasParam("base/type")) b.type = parse_base_type(type);
-  std::vector<double> deg;
   p.get("base/name", b.name)
       .get("base/wheel_radius", b.wheel_radius)
       .get("base/track", b.track)
       .get("base/wheel_distance", b.wheel_distance)
-      .get("base/wheel_angles", deg)
+      .get("base/wheel_angles", b.wheel_angles)  // rad (REP-103)
       .get("base/max_wheel_speed", b.max_wheel_speed)
       .get("base/max_wheel_accel", b.max_wheel_accel)
       .get("base/deadband_linear", b.deadband_linear)
       .get("base/deadband_angular", b.deadband_angular)
       .get("base/counts_per_rev", b.counts_per_rev);
-  if (nh.hasParam("base/wheel_angles")) {
-    b.wheel_angles.clear();
-    for (double d : deg) b.wheel_angles.push_back(mrt::common::deg_to_rad(d));
-  }
   return b;  // validated with the session options
 }
 
