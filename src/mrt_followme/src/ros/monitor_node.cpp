@@ -88,7 +88,11 @@ class Monitor {
     const auto& [t0, p0] = after == history_.begin() ? *after : *std::prev(after);
     const double w = t1 > t0 ? (t - t0) / (t1 - t0) : 1.0;
     const double x = p0.x + w * (p1.x - p0.x), y = p0.y + w * (p1.y - p0.y);
-    r_.max_pose_error = std::max(r_.max_pose_error, std::hypot(e.x - x, e.y - y));
+    const double err = std::hypot(e.x - x, e.y - y);
+    if (err > r_.max_pose_error && err > 0.05)
+      ROS_INFO("monitor: MUREA's error %.3f m at %.3f s (estimate %.3f %.3f %.3f, truth %.3f %.3f %.3f)", err, t, e.x, e.y,
+               e.theta, x, y, p1.theta);
+    r_.max_pose_error = std::max(r_.max_pose_error, err);
   }
 
   void on_person(const std::string& name, const nav_msgs::Odometry& m) {

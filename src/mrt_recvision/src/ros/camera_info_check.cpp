@@ -16,17 +16,8 @@ std::string num(double v) {
   return buf;
 }
 
-// The profile in D (after roll and pitch) against the calibration's; "" if they agree.
-std::string compare_profile(const std::vector<double>& d, const mrt::common::MirrorProfile& cal) {
-  if (d.size() < 6 || d.size() % 2 != 0) return "D holds " + std::to_string(d.size()) + " values (expected roll, pitch and 2 or more (theta, r) pairs)";
-  std::vector<std::pair<double, double>> table;
-  for (std::size_t i = 2; i < d.size(); i += 2) table.emplace_back(d[i], d[i + 1]);
-  mrt::common::MirrorProfile got;
-  try {
-    got = mrt::common::MirrorProfile(std::move(table));
-  } catch (const std::exception& e) {
-    return std::string("D's profile: ") + e.what();
-  }
+// The described profile against the calibration's; "" if they agree.
+std::string compare_profile(const mrt::common::MirrorProfile& got, const mrt::common::MirrorProfile& cal) {
   if (std::abs(got.max_theta() - cal.max_theta()) > 0.02)
     return "mirror profile ends at " + num(got.max_theta()) + " rad, calibration at " + num(cal.max_theta());
   const double end = std::min(got.max_theta(), cal.max_theta());
@@ -37,6 +28,17 @@ std::string compare_profile(const std::vector<double>& d, const mrt::common::Mir
       return "mirror radius at " + num(t) + " rad is " + num(a) + " px, calibration " + num(b) + " px";
   }
   return "";
+}
+
+// The described camera's centre, tilt and profile against the calibration's; "" if they agree.
+std::string compare(const mrt::common::OmniCamera& got, const mrt::common::OmniCamera& cal) {
+  if (std::abs(got.cx - cal.cx) > 0.5 || std::abs(got.cy - cal.cy) > 0.5)
+    return "mirror centre (" + num(got.cx) + ", " + num(got.cy) + "), calibration (" + num(cal.cx) + ", " +
+           num(cal.cy) + ")";
+  if (std::abs(got.roll - cal.roll) > 1e-3 || std::abs(got.pitch - cal.pitch) > 1e-3)
+    return "mirror tilt (roll " + num(got.roll) + ", pitch " + num(got.pitch) + "), calibration (" + num(cal.roll) +
+           ", " + num(cal.pitch) + ")";
+  return compare_profile(got.profile, cal.profile);
 }
 
 }  // namespace
@@ -55,15 +57,9 @@ CameraInfoCheck check_camera_info(const sensor_msgs::CameraInfo& info, const mrt
     c.why = "distortion model '" + info.distortion_model + "': size checked only";
     return c;
   }
-  if (std::abs(info.K[2] - cal.cx) > 0.5 || std::abs(info.K[5] - cal.cy) > 0.5) {
-    c.why = "mirror centre (" + num(info.K[2]) + ", " + num(info.K[5]) + "), calibration (" + num(cal.cx) + ", " +
-            num(cal.cy) + ")";
-  } else if (info.D.size() >= 2 && (std::abs(info.D[0] - cal.roll) > 1e-3 || std::abs(info.D[1] - cal.pitch) > 1e-3)) {
-    c.why = "mirror tilt (roll " + num(info.D[0]) + ", pitch " + num(info.D[1]) + "), calibration (" + num(cal.roll) +
-            ", " + num(cal.pitch) + ")";
-  } else {
-    c.why = compare_profile(info.D, cal.profile);
-  }
+  mrt::common::OmniCamera got;
+  c.why = mrt::ros_common::from_camera_info(info, &got);
+  if (c.why.empty()) c.why = compare(got, cal);
   c.result = c.why.empty() ? R::kMatches : R::kModelMismatch;
   return c;
 }

@@ -1,12 +1,8 @@
 // The camera/camera_info a camera driver (or mrt_sim) publishes, checked
 // against the calibration RecVision runs with. mrt_sim describes its
 // omnidirectional camera with the non-standard distortion model
-// kOmniProfileModel (README "CameraInfo of the omnidirectional camera"):
-//   K = [0, 0, cx; 0, 0, cy; 0, 0, 1]  (no pinhole focal length: zeros)
-//   D = [roll, pitch, theta_0, r_0, theta_1, r_1, ...]  (rad; the mirror
-//       profile's (angle from the downward vertical rad, image radius px)
-//       samples, as mrt_common::MirrorProfile holds them)
-// Any other model (a V4L2 driver's plumb_bob, say) is checked for its size only.
+// kOmniProfileModel (mrt_common_ros/omni_camera_info.h). Any other model
+// (a V4L2 driver's plumb_bob, say) is checked for its size only.
 #pragma once
 
 #include <sensor_msgs/CameraInfo.h>
@@ -14,10 +10,11 @@
 #include <string>
 
 #include "mrt_common/omni_camera.h"
+#include "mrt_common_ros/omni_camera_info.h"
 
 namespace mrt::recvision::ros_layer {
 
-inline const char* const kOmniProfileModel = "mrt_omni_profile";
+using mrt::ros_common::kOmniProfileModel;
 
 struct CameraInfoCheck {
   enum class Result {

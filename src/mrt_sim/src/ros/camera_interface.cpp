@@ -7,26 +7,6 @@
 
 namespace mrt::sim::node {
 
-sensor_msgs::CameraInfo to_camera_info(const mrt::common::OmniCamera& c, const std::string& frame,
-                                       const ros::Time& stamp) {
-  sensor_msgs::CameraInfo info;  // binning 0 and roi all zeros: full resolution, no region
-  info.header.stamp = stamp;
-  info.header.frame_id = frame;
-  info.width = static_cast<std::uint32_t>(c.width);
-  info.height = static_cast<std::uint32_t>(c.height_px);
-  info.distortion_model = kOmniProfileModel;
-  // No pinhole focal length exists: fx = fy = 0; only the mirror centre.
-  info.K = {0.0, 0.0, c.cx, 0.0, 0.0, c.cy, 0.0, 0.0, 1.0};
-  info.R = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};  // monocular: no rectification rotation
-  info.P = {0.0, 0.0, c.cx, 0.0, 0.0, 0.0, c.cy, 0.0, 0.0, 0.0, 1.0, 0.0};
-  info.D = {c.roll, c.pitch};
-  for (const auto& [theta, radius] : c.profile.table()) {
-    info.D.push_back(theta);
-    info.D.push_back(radius);
-  }
-  return info;
-}
-
 CameraInterface::CameraInterface(ros::NodeHandle& rnh, const Simulator& sim, std::size_t index,
                                  const std::string& frame_prefix)
     : sim_(sim),
@@ -44,7 +24,7 @@ void CameraInterface::publish(const ros::Time& stamp) {
   if (!r.camera_ready) return;
   // camera_info is cheap: it goes out whenever a frame is due; the image
   // is rendered only while someone subscribes to it.
-  if (info_pub_.getNumSubscribers() > 0) info_pub_.publish(to_camera_info(renderer_.camera(), frame_, stamp));
+  if (info_pub_.getNumSubscribers() > 0) info_pub_.publish(mrt::ros_common::to_camera_info(renderer_.camera(), frame_, stamp));
   if (image_pub_.getNumSubscribers() == 0) return;
   // Render straight into the message's buffer (no copy through cv_bridge).
   const mrt::common::OmniCamera& cam = renderer_.camera();

@@ -14,26 +14,11 @@
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 
+#include "mrt_common_ros/omni_camera_info.h"
 #include "mrt_sim/camera.h"
 #include "mrt_sim/simulator.h"
 
 namespace mrt::sim::node {
-
-/// distortion_model of the omnidirectional camera's camera_info: not a
-/// pinhole model (image_geometry and image_proc treat it as unknown and
-/// refuse to rectify), so nothing misreads it as plumb_bob.
-inline const char* const kOmniProfileModel = "mrt_omni_profile";
-
-/// camera_info of an omnidirectional camera (README "CameraInfo of the
-/// omnidirectional camera"): width, height; K = [0, 0, cx; 0, 0, cy; 0, 0, 1]
-/// (the mirror centre; fx = fy = 0, no pinhole focal length exists), R the
-/// identity, P = [K | 0]; distortion_model kOmniProfileModel with
-/// D = [roll, pitch, theta_0, r_0, theta_1, r_1, ...]: the mirror axis tilt
-/// (rad) and the radial profile's samples (angle from the downward vertical
-/// rad, image radius px) exactly as OmniCamera holds them. The viewpoint's
-/// height is the omni_mirror frame's in tf.
-sensor_msgs::CameraInfo to_camera_info(const mrt::common::OmniCamera& c, const std::string& frame,
-                                       const ros::Time& stamp);
 
 class CameraInterface {
  public:
