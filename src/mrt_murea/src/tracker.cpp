@@ -57,6 +57,7 @@ Tracker::Tracker(const FeatureMap& map, const TrackerOptions& o) : map_(map), op
     throw std::invalid_argument("Tracker: expected 0 < min_window <= max_window (theta < 3 rad), window_sigmas > 0");
   if (!(o.collapse_fraction >= 0.0 && o.collapse_fraction <= 1.0) || o.collapse_frames < 1)
     throw std::invalid_argument("Tracker: expected collapse_fraction in [0, 1] and collapse_frames >= 1");
+  if (o.settle_frames < 0) throw std::invalid_argument("Tracker: expected settle_frames >= 0");
   Localizer check(map_, opt_.search);  // validates the search options once
 }
 
@@ -75,6 +76,7 @@ void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
   cov_ = covariance;
   tracking_ = has_prior_ = true;
   collapsed_frames_ = 0;
+  unconfirmed_ = 0;
   modes_.clear();
 }
 
@@ -178,6 +180,8 @@ TrackResult Tracker::global_update(const std::vector<Percept>& percepts, double 
   out.refined = refine_pose(loc, percepts, false);
   tracking_ = has_prior_ = true;
   collapsed_frames_ = 0;
+  unconfirmed_ = opt_.settle_frames;
+  out.settled = settled();
   out.pose = pose_;
   out.covariance = cov_;
   return out;
@@ -270,8 +274,10 @@ TrackResult Tracker::update(const std::vector<Percept>& percepts) {
       cov_[4] = std::max(cov_[4], cov_[0]);
     }
     out.refined = refine_pose(loc, percepts, true, &predicted, &predicted_cov);
+    if (unconfirmed_ > 0) --unconfirmed_;
   }
   out.lost = !tracking_;
+  out.settled = settled();
   out.pose = pose_;
   out.covariance = cov_;
   return out;

@@ -144,6 +144,36 @@ TEST(Tracker, UpdatesWhileStandingStill) {
   }
 }
 
+// settle_frames 2: a global fix is settled after two more tracked frames
+// with percepts (a frame without any does not count); a pose set by hand
+// at once; a global fix after a teleport waits again.
+TEST(Tracker, GlobalFixSettlesAfterTrackedFrames) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  TrackerOptions o;
+  o.settle_frames = 2;
+  Tracker t(map, o);
+  const std::vector<Percept> ps = percepts_at(w, Pose2D(-4, -2, 2.5));
+  const TrackResult g = t.update(ps);
+  EXPECT_EQ(g.mode, TrackMode::Global);
+  EXPECT_TRUE(t.tracking());
+  EXPECT_FALSE(g.settled);
+  EXPECT_FALSE(t.update({}).settled);  // odometry only: confirms nothing
+  EXPECT_FALSE(t.update(ps).settled);
+  const TrackResult second = t.update(ps);
+  EXPECT_EQ(second.mode, TrackMode::Tracking);
+  EXPECT_TRUE(second.settled);
+  EXPECT_TRUE(t.settled());
+  const std::vector<Percept> moved = percepts_at(w, Pose2D(4, -3, 2));
+  for (int i = 0; i < o.collapse_frames; ++i) t.update(moved);  // collapsed: lost
+  EXPECT_FALSE(t.settled());
+  EXPECT_FALSE(t.update(moved).settled);  // the new global fix
+  t.set_pose(Pose2D(4, -3, 2), diag(0.01, 0.01, 0.01));
+  EXPECT_TRUE(t.settled());
+  o.settle_frames = -1;
+  EXPECT_THROW(Tracker(map, o), std::invalid_argument);
+}
+
 // Teleport: tracking at (-5, 1, 2.8), the robot is carried to (4, -3, 2)
 // with no odometry. The window around (-2, 0, 0) cannot explain the new
 // percepts (evidence below 40 % of their total): frames 1 to 3 are

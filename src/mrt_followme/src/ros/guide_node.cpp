@@ -12,6 +12,7 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
+#include <mrt_msgs/Tour.h>
 #include <mrt_msgs/TourResult.h>
 #include <mrt_msgs/TourStatus.h>
 #include <std_msgs/String.h>
@@ -89,7 +90,7 @@ class GuideNode {
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     status_pub_ = nh.advertise<mrt_msgs::TourStatus>("tour_status", 5, true);
     result_pub_ = nh.advertise<mrt_msgs::TourResult>("tour_result", 1, true);
-    tour_pub_ = nh.advertise<std_msgs::String>("tour", 1, true);
+    tour_pub_ = nh.advertise<mrt_msgs::Tour>("tour", 1, true);
     call_pub_ = nh.advertise<std_msgs::Empty>("call_visitor", 1);
     door_pub_ = nh.advertise<mrt_msgs::Percept>("door_percepts", 5);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("tour_markers", 1, true);
@@ -118,8 +119,9 @@ class GuideNode {
     request_.reset();
     done_ = false;
     started_ = ros::Time::now();
-    std_msgs::String t;
-    for (const auto& n : names) t.data += (t.data.empty() ? "" : ",") + n;
+    mrt_msgs::Tour t;
+    t.header.stamp = started_;
+    t.exhibits = names;
     tour_pub_.publish(t);
     return "";
   }

@@ -8,11 +8,10 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
-#include <std_msgs/String.h>
+#include <mrt_msgs/Tour.h>
 
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -62,15 +61,13 @@ class VisitorNode {
     model_ = std::make_unique<VisitorModel>(cfg_.visitor, tour, wander);
   }
 
-  void on_tour(const std_msgs::String& m) {
-    std::vector<std::string> names;
-    std::stringstream ss(m.data);
-    for (std::string n; std::getline(ss, n, ',');)
-      if (!n.empty()) names.push_back(n);
+  void on_tour(const mrt_msgs::Tour& m) {
     try {
-      start(names);
+      start(m.exhibits);
     } catch (const std::exception& e) {
-      ROS_WARN("visitor: tour %s: %s", m.data.c_str(), e.what());
+      std::string names;
+      for (const auto& n : m.exhibits) names += (names.empty() ? "" : ",") + n;
+      ROS_WARN("visitor: tour %s: %s", names.c_str(), e.what());
     }
   }
 

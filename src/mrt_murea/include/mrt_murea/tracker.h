@@ -55,6 +55,11 @@ struct TrackerOptions {
   /// percepts by least squares, fused with odometry's prediction while
   /// tracking (refine.h); disable to keep the plateau's mean.
   RefineOptions refine;
+  /// A global fix rests on one frame's percepts (its error is their noise
+  /// over the features seen); it is `settled` once this many tracked
+  /// frames with usable percepts have been fused into it. A pose that was
+  /// set (set_pose) is settled at once. 0: every fix at once.
+  int settle_frames = 0;
 };
 
 enum class TrackMode { Global, Tracking };
@@ -69,6 +74,7 @@ struct TrackResult {
   bool lost = false;          // no accepted pose after this frame (pose is the last one)
   bool refined = false;       // the pose is the least-squares fit (refine.h)
   bool resolved = false;      // an ambiguous global search resolved by the prior
+  bool settled = false;       // tracking, and the last global fix confirmed (settle_frames)
   std::size_t modes = 0;      // modes carried after this frame (0 or 2, while ambiguous)
 };
 
@@ -96,6 +102,8 @@ class Tracker {
   void reset();
 
   bool tracking() const { return tracking_; }
+  /// Tracking from a confirmed fix (TrackerOptions::settle_frames).
+  bool settled() const { return tracking_ && unconfirmed_ == 0; }
   /// The modes carried while ambiguous (empty otherwise).
   const std::vector<Mode>& modes() const { return modes_; }
   const Pose2D& pose() const { return pose_; }
@@ -129,6 +137,7 @@ class Tracker {
   bool has_prior_ = false;  // pose_ and cov_ come from an accepted or set pose
   int collapsed_frames_ = 0;
   int frames_since_global_ = 0;  // frames with modes carried since the last global search
+  int unconfirmed_ = 0;          // tracked frames the last global fix still waits for
   std::vector<Mode> modes_;
   Pose2D pose_;
   Covariance3 cov_{};

@@ -242,6 +242,7 @@ class MureaNode {
     // The modes, also while lost (the ambiguous ones), as amcl's particles.
     cloud_pub_.publish(particle_cloud(r, opt_.map_frame, stamp));
     if (!tracker_->tracking()) return;  // lost: keep the last map -> odom
+    if (!tracker_->settled()) return;  // a global fix not yet confirmed (~settle_frames)
     geometry_msgs::PoseWithCovarianceStamped m;
     m.header.stamp = stamp;
     m.header.frame_id = opt_.map_frame;

@@ -92,7 +92,7 @@ NodeOptions read_options(const ros::NodeHandle& pnh) {
       .get_non_negative("odom_alpha_theta_xy", o.odom_alpha_theta_xy)
       .get_non_negative("transform_tolerance", o.transform_tolerance)
       .get_positive("tf_rate", o.tf_rate);
-  p.get_non_negative("ambiguous_global_period", t.ambiguous_global_period);
+  p.get_non_negative("ambiguous_global_period", t.ambiguous_global_period).get_non_negative("settle_frames", t.settle_frames);
   p.get_non_negative("prior_gate", t.prior_gate)
       .get_non_negative("lost_growth_xy", t.lost_growth_xy)
       .get_non_negative("lost_growth_theta", t.lost_growth_theta);
