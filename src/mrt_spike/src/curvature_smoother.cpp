@@ -1,0 +1,200 @@
+#include "mrt_spike/curvature_smoother.h"
+
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace ob = ompl::base;
+
+namespace mrt::spike {
+
+namespace {
+
+double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+// The shortest curve of the space from a to b sampled every `h` of its
+// length (both ends included); returns the length.
+template <class Space, class CurvePath>
+double sample(const Space& space, const Pose& a, const Pose& b, double h, std::vector<Pose>& out) {
+  ob::State* from = space.allocState();
+  ob::State* to = space.allocState();
+  ob::State* s = space.allocState();
+  auto set = [](ob::State* st, const Pose& p) {
+    auto* se2 = st->as<ob::SE2StateSpace::StateType>();
+    se2->setXY(p.x, p.y);
+    se2->setYaw(p.yaw);
+  };
+  set(from, a), set(to, b);
+  const double length = space.distance(from, to);
+  const int n = std::max(1, static_cast<int>(std::ceil(length / h)));
+  bool first = true;
+  CurvePath path;
+  for (int i = 0; i <= n; ++i) {
+    space.interpolate(from, to, static_cast<double>(i) / n, first, path, s);
+    const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+    out.push_back({se2->getX(), se2->getY(), se2->getYaw()});
+  }
+  out.back() = b;  // exactly at the waypoint
+  space.freeState(s), space.freeState(to), space.freeState(from);
+  return length;
+}
+
+// Appends a piece, its first pose dropped when it repeats the last one.
+void append(std::vector<Pose>& out, const std::vector<Pose>& piece) {
+  size_t i = 0;
+  if (!out.empty() && !piece.empty()) {
+    const Pose& l = out.back();
+    const Pose& f = piece.front();
+    if (std::hypot(l.x - f.x, l.y - f.y) < 1e-9 && std::abs(wrap(l.yaw - f.yaw)) < 1e-9) i = 1;
+  }
+  out.insert(out.end(), piece.begin() + static_cast<std::ptrdiff_t>(i), piece.end());
+}
+
+}  // namespace
+
+SmoothingOptions::Model smoothing_model(const std::string& name) {
+  if (name == "none") return SmoothingOptions::Model::none;
+  if (name == "dubins") return SmoothingOptions::Model::dubins;
+  if (name == "reeds_shepp") return SmoothingOptions::Model::reeds_shepp;
+  throw std::invalid_argument("unknown smoothing '" + name + "' (expected none, dubins or reeds_shepp)");
+}
+
+double max_curvature(const std::vector<Pose>& poses) {
+  double k = 0.0;
+  for (size_t i = 1; i < poses.size(); ++i) {
+    const double ds = std::hypot(poses[i].x - poses[i - 1].x, poses[i].y - poses[i - 1].y);
+    const double dth = std::abs(wrap(poses[i].yaw - poses[i - 1].yaw));
+    if (ds < 1e-9) {
+      if (dth > 1e-6) return std::numeric_limits<double>::infinity();
+      continue;
+    }
+    k = std::max(k, dth / ds);
+  }
+  return k;
+}
+
+double polyline_length(const std::vector<Pose>& poses) {
+  double l = 0.0;
+  for (size_t i = 1; i < poses.size(); ++i) l += std::hypot(poses[i].x - poses[i - 1].x, poses[i].y - poses[i - 1].y);
+  return l;
+}
+
+int corner_count(const std::vector<Pose>& poses) {
+  int corners = 0;
+  double last = std::numeric_limits<double>::quiet_NaN();
+  for (size_t i = 1; i < poses.size(); ++i) {
+    const double dx = poses[i].x - poses[i - 1].x, dy = poses[i].y - poses[i - 1].y;
+    if (std::hypot(dx, dy) < 1e-9) continue;
+    const double dir = std::atan2(dy, dx);
+    if (!std::isnan(last) && std::abs(wrap(dir - last)) > 1e-6) ++corners;
+    last = dir;
+  }
+  return corners;
+}
+
+std::vector<Pose> waypoint_poses(const std::vector<Cell>& cells, const GridFrame& frame) {
+  std::vector<Pose> out;
+  for (const Cell& c : cells)
+    out.push_back({frame.origin_x + frame.resolution * c.x, frame.origin_y + frame.resolution * c.y, 0.0});
+  return out;
+}
+
+CurvatureSmoother::CurvatureSmoother(const OccupancyGrid& grid, const GridFrame& frame,
+                                     const SmoothingOptions& options)
+    : grid_(grid), frame_(frame), options_(options) {
+  if (options.model == SmoothingOptions::Model::none) throw std::invalid_argument("smoothing model none");
+  if (!(options.turning_radius > 0.0)) throw std::invalid_argument("turning radius must be > 0");
+  if (!(options.step > 0.0)) throw std::invalid_argument("smoothing step must be > 0");
+  if (options.model == SmoothingOptions::Model::dubins)
+    space_ = std::make_shared<ob::DubinsStateSpace>(options.turning_radius);
+  else
+    space_ = std::make_shared<ob::ReedsSheppStateSpace>(options.turning_radius);
+}
+
+bool CurvatureSmoother::free_at(double x, double y) const {
+  return grid_.free(static_cast<int>(std::lround((x - frame_.origin_x) / frame_.resolution)),
+                    static_cast<int>(std::lround((y - frame_.origin_y) / frame_.resolution)));
+}
+
+bool CurvatureSmoother::poses_free(const std::vector<Pose>& poses) const {
+  return std::all_of(poses.begin(), poses.end(), [this](const Pose& p) { return free_at(p.x, p.y); });
+}
+
+bool CurvatureSmoother::curve(const Pose& a, const Pose& b, std::vector<Pose>& out, double& length) const {
+  // checked every half cell, output every `step`
+  const double h = std::min(options_.step, 0.5 * frame_.resolution);
+  std::vector<Pose> dense;
+  if (options_.model == SmoothingOptions::Model::dubins)
+    length = sample<ob::DubinsStateSpace, ob::DubinsStateSpace::DubinsPath>(
+        static_cast<const ob::DubinsStateSpace&>(*space_), a, b, h, dense);
+  else
+    length = sample<ob::ReedsSheppStateSpace, ob::ReedsSheppStateSpace::ReedsSheppPath>(
+        static_cast<const ob::ReedsSheppStateSpace&>(*space_), a, b, h, dense);
+  if (!poses_free(dense)) return false;
+  const size_t every = std::max<size_t>(1, static_cast<size_t>(std::floor(options_.step / h + 1e-9)));
+  out.clear();
+  for (size_t i = 0; i < dense.size(); i += every) out.push_back(dense[i]);
+  if ((dense.size() - 1) % every != 0) out.push_back(dense.back());
+  return true;
+}
+
+// The curve from a to b; a colliding one is split at the middle of the
+// straight segment (heading along it), `splits` times at most, then the
+// straight segment is kept (turning on the spot at its ends).
+void CurvatureSmoother::segment(const Pose& a, const Pose& b, int splits, SmoothedPath& out) const {
+  std::vector<Pose> piece;
+  double length = 0.0;
+  if (curve(a, b, piece, length)) {
+    append(out.poses, piece);
+    out.length += length;
+    return;
+  }
+  const double dir = std::atan2(b.y - a.y, b.x - a.x);
+  if (splits > 0) {
+    const Pose m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y), dir};
+    segment(a, m, splits - 1, out);
+    segment(m, b, splits - 1, out);
+    return;
+  }
+  const double len = std::hypot(b.x - a.x, b.y - a.y);
+  const int n = std::max(1, static_cast<int>(std::ceil(len / options_.step)));
+  piece.clear();
+  for (int i = 0; i <= n; ++i) {
+    const double t = static_cast<double>(i) / n;
+    piece.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), dir});
+  }
+  piece.push_back(b);  // turning on the spot to b's heading
+  append(out.poses, piece);
+  out.length += len;
+  out.fully_smoothed = false;
+  ++out.kept_segments;
+}
+
+SmoothedPath CurvatureSmoother::smooth(const std::vector<Pose>& waypoints, double start_yaw,
+                                       std::optional<double> goal_yaw) const {
+  std::vector<Pose> w;  // distinct waypoints
+  for (const Pose& p : waypoints)
+    if (w.empty() || std::hypot(p.x - w.back().x, p.y - w.back().y) > 1e-9) w.push_back(p);
+  SmoothedPath out;
+  if (w.size() < 2) {
+    if (!w.empty()) out.poses.push_back({w[0].x, w[0].y, goal_yaw.value_or(start_yaw)});
+    return out;
+  }
+  auto dir = [&w](size_t i) { return std::atan2(w[i + 1].y - w[i].y, w[i + 1].x - w[i].x); };
+  w.front().yaw = std::isfinite(start_yaw) ? start_yaw : dir(0);
+  for (size_t i = 1; i + 1 < w.size(); ++i) {
+    const double in = dir(i - 1), out_dir = dir(i);
+    const double sx = std::cos(in) + std::cos(out_dir), sy = std::sin(in) + std::sin(out_dir);
+    w[i].yaw = std::hypot(sx, sy) < 1e-9 ? out_dir : std::atan2(sy, sx);  // the bisector
+  }
+  w.back().yaw = goal_yaw.value_or(dir(w.size() - 2));
+  for (size_t i = 0; i + 1 < w.size(); ++i) segment(w[i], w[i + 1], options_.max_splits, out);
+  out.max_curvature = max_curvature(out.poses);
+  return out;
+}
+
+}  // namespace mrt::spike
