@@ -16,10 +16,26 @@ namespace {
 
 double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 
+// Where a curve's pieces (arcs, straight lines) meet, as fractions of its
+// length: a Reeds-Shepp cusp is sampled exactly, so the heading change over
+// distance stays the curvature on both sides of it.
+std::vector<double> joints(const ob::DubinsStateSpace::DubinsPath& p) {
+  const double l = p.length();
+  return {p.length_[0] / l, (p.length_[0] + p.length_[1]) / l};
+}
+std::vector<double> joints(const ob::ReedsSheppStateSpace::ReedsSheppPath& p) {
+  std::vector<double> out;
+  double s = 0.0;
+  for (int i = 0; i < 4; ++i) out.push_back((s += std::abs(p.length_[i])) / p.totalLength_);
+  return out;
+}
+
 // The shortest curve of the space from a to b sampled every `h` of its
-// length (both ends included); returns the length.
+// length at most and at its joints (both ends included; `arc`: each
+// sample's arc length from a, `joint` true for the joints); returns the length.
 template <class Space, class CurvePath>
-double sample(const Space& space, const Pose& a, const Pose& b, double h, std::vector<Pose>& out) {
+double sample(const Space& space, const Pose& a, const Pose& b, double h, std::vector<Pose>& out,
+              std::vector<double>& arc, std::vector<bool>& joint) {
   ob::State* from = space.allocState();
   ob::State* to = space.allocState();
   ob::State* s = space.allocState();
@@ -29,18 +45,61 @@ double sample(const Space& space, const Pose& a, const Pose& b, double h, std::v
     se2->setYaw(p.yaw);
   };
   set(from, a), set(to, b);
-  const double length = space.distance(from, to);
-  const int n = std::max(1, static_cast<int>(std::ceil(length / h)));
   bool first = true;
   CurvePath path;
-  for (int i = 0; i <= n; ++i) {
-    space.interpolate(from, to, static_cast<double>(i) / n, first, path, s);
+  space.interpolate(from, to, 0.5, first, path, s);  // computes the path once
+  const double length = space.distance(from, to);
+  const int n = std::max(1, static_cast<int>(std::ceil(length / h)));
+  std::vector<std::pair<double, bool>> ts;
+  for (int i = 0; i <= n; ++i) ts.push_back({static_cast<double>(i) / n, false});
+  if (length > 0.0)
+    for (double t : joints(path))
+      if (t > 1e-9 && t < 1.0 - 1e-9) ts.push_back({t, true});
+  std::sort(ts.begin(), ts.end());
+  for (size_t i = 0; i < ts.size(); ++i) {
+    const auto [t, j] = ts[i];
+    if (i > 0 && t - ts[i - 1].first < 1e-12) continue;  // a joint on a sample, or two joints together
+    space.interpolate(from, to, t, first, path, s);
     const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
     out.push_back({se2->getX(), se2->getY(), se2->getYaw()});
+    joint.push_back(j);
+    arc.push_back(t * length);
   }
-  out.back() = b;  // exactly at the waypoint
+  out.front() = a, out.back() = b;  // exactly at the waypoints
   space.freeState(s), space.freeState(to), space.freeState(from);
   return length;
+}
+
+// OMPL 1.5's Dubins words assert (aborting the process) when an arc of the
+// curves LSL, RSR, LSR, RSL is within 5e-7 rad below a multiple of 2 pi
+// (its mod2pi rounds it to 0, and the error, times the straight part,
+// fails its 2e-6 check). Whether a's and b's headings come that close to
+// it (a band of 1e-6 rad): 1 for a first arc (the caller turns a's heading
+// by a trifle), 2 for a last arc (b's), 0 for none.
+int dubins_degenerate(const Pose& a, const Pose& b, double rho) {
+  const double two_pi = 2.0 * M_PI;
+  auto near_below = [two_pi](double x) {  // just below 0 mod 2 pi, but not 0
+    const double m = x - two_pi * std::floor(x / two_pi);
+    return two_pi - m < 1e-6 && two_pi - m > 1e-12;
+  };
+  const double dx = b.x - a.x, dy = b.y - a.y, d = std::sqrt(dx * dx + dy * dy) / rho, th = std::atan2(dy, dx);
+  const double al = a.yaw - th, be = b.yaw - th;
+  const double ca = std::cos(al), sa = std::sin(al), cb = std::cos(be), sb = std::sin(be);
+  std::vector<std::pair<double, double>> arcs;  // (t, q) of each word
+  const double lsl = std::atan2(cb - ca, d + sa - sb), rsr = std::atan2(ca - cb, d - sa + sb);
+  arcs.push_back({lsl - al, be - lsl});
+  arcs.push_back({al - rsr, rsr - be});
+  const double p_rsl = std::sqrt(std::max(0.0, d * d - 2.0 + 2.0 * (ca * cb + sa * sb - d * (sa + sb))));
+  const double rsl = std::atan2(ca + cb, d - sa - sb) - std::atan2(2.0, p_rsl);
+  arcs.push_back({al - rsl, be - rsl});
+  const double p_lsr = std::sqrt(std::max(0.0, d * d - 2.0 + 2.0 * (ca * cb + sa * sb + d * (sa + sb))));
+  const double lsr = std::atan2(-ca - cb, d + sa + sb) - std::atan2(-2.0, p_lsr);
+  arcs.push_back({lsr - al, lsr - be});
+  for (const auto& [t, q] : arcs) {
+    if (near_below(t)) return 1;
+    if (near_below(q)) return 2;
+  }
+  return 0;
 }
 
 // Appends a piece, its first pose dropped when it repeats the last one.
@@ -125,20 +184,37 @@ bool CurvatureSmoother::poses_free(const std::vector<Pose>& poses) const {
 }
 
 bool CurvatureSmoother::curve(const Pose& a, const Pose& b, std::vector<Pose>& out, double& length) const {
-  // checked every half cell, output every `step`
+  // checked every half cell, output every `step` and at the joints (cusps)
   const double h = std::min(options_.step, 0.5 * frame_.resolution);
   std::vector<Pose> dense;
-  if (options_.model == SmoothingOptions::Model::dubins)
+  std::vector<bool> joint;
+  std::vector<double> arc;
+  if (options_.model == SmoothingOptions::Model::dubins) {
+    Pose from = a, to = b;  // a heading turned by 1e-4 rad at most where OMPL 1.5 would abort
+    for (double eps : {2e-6, -2e-6, 1e-5, -1e-5, 1e-4, -1e-4}) {
+      const int side = dubins_degenerate(from, to, options_.turning_radius);
+      if (side == 0) break;
+      (side == 1 ? from.yaw : to.yaw) = (side == 1 ? a.yaw : b.yaw) + eps;
+    }
     length = sample<ob::DubinsStateSpace, ob::DubinsStateSpace::DubinsPath>(
-        static_cast<const ob::DubinsStateSpace&>(*space_), a, b, h, dense);
-  else
+        static_cast<const ob::DubinsStateSpace&>(*space_), from, to, h, dense, arc, joint);
+    dense.front() = a, dense.back() = b;
+  } else {
     length = sample<ob::ReedsSheppStateSpace, ob::ReedsSheppStateSpace::ReedsSheppPath>(
-        static_cast<const ob::ReedsSheppStateSpace&>(*space_), a, b, h, dense);
+        static_cast<const ob::ReedsSheppStateSpace&>(*space_), a, b, h, dense, arc, joint);
+  }
   if (!poses_free(dense)) return false;
-  const size_t every = std::max<size_t>(1, static_cast<size_t>(std::floor(options_.step / h + 1e-9)));
   out.clear();
-  for (size_t i = 0; i < dense.size(); i += every) out.push_back(dense[i]);
-  if ((dense.size() - 1) % every != 0) out.push_back(dense.back());
+  double kept = 0.0;  // arc length at the last pose kept: none further than `step` apart
+  for (size_t i = 0; i < dense.size(); ++i) {
+    const bool end = i == 0 || i + 1 == dense.size();
+    const bool dubins = options_.model == SmoothingOptions::Model::dubins;  // beside an end: a heading turned
+    if (dubins && !end && (arc[i] < 1e-3 || length - arc[i] < 1e-3)) continue;
+    if (end || joint[i] || arc[i + 1] - kept > options_.step + 1e-9) {
+      out.push_back(dense[i]);
+      kept = arc[i];
+    }
+  }
   return true;
 }
 

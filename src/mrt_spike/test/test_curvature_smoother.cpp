@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
+#include <string>
 
 #include "mrt_spike/curvature_smoother.h"
 #include "mrt_spike/planner.h"
+#include "mrt_spike/world_planner.h"
 
 using namespace mrt::spike;
 
@@ -156,4 +159,55 @@ TEST(CurvatureSmoother, ModelsByNameAndBadOptions) {
   ASSERT_EQ(p.poses.size(), 1u);
   EXPECT_DOUBLE_EQ(p.poses[0].yaw, 0.5);
   EXPECT_EQ(p.length, 0.0);
+}
+
+TEST(CurvatureSmoother, ReedsSheppCuspsKeepTheBound) {
+  // 0.4 m sideways, same heading: Reeds-Shepp goes forward and back (cusps);
+  // the cusps are sampled, so heading change over distance stays 1/r.
+  const double r = 0.5;
+  const CurvatureSmoother rs(kOpen, kCentred, options(SmoothingOptions::Model::reeds_shepp, r));
+  std::vector<Pose> out;
+  double l = 0;
+  ASSERT_TRUE(rs.curve({0, 0, 0}, {0, 0.4, 0}, out, l));
+  int reversals = 0;
+  for (size_t i = 2; i < out.size(); ++i) {
+    const double ax = out[i - 1].x - out[i - 2].x, ay = out[i - 1].y - out[i - 2].y;
+    const double bx = out[i].x - out[i - 1].x, by = out[i].y - out[i - 1].y;
+    if (ax * bx + ay * by < 0) ++reversals;
+  }
+  EXPECT_GE(reversals, 1);
+  EXPECT_LE(max_curvature(out), 1.0 / r * 1.001);
+  EXPECT_GT(l, 0.4);
+}
+
+TEST(CurvatureSmoother, MuseumQueriesKeepTheBoundAndTheFreeCells) {
+  // FollowMe's museum at 0.05 m, 0.3 + 0.1 m of inflation, r = 0.15 m (long
+  // nearly straight segments: OMPL 1.5's Dubins assertion is avoided)
+  WorldPlanner planner(load_any_map(std::string(MRT_WORLDS_DIR) + "/museum.yaml", 0.05), WorldPlannerOptions{});
+  const OccupancyGrid& grid = planner.inflated();
+  const GridFrame& f = planner.map().frame;
+  std::vector<Cell> free;
+  for (int y = 0; y < grid.height(); ++y)
+    for (int x = 0; x < grid.width(); ++x)
+      if (grid.free(x, y)) free.push_back({x, y});
+  for (auto m : {SmoothingOptions::Model::dubins, SmoothingOptions::Model::reeds_shepp}) {
+    SmoothingOptions o = options(m, 0.15);
+    o.step = 0.05;
+    const CurvatureSmoother s(grid, f, o);
+    std::mt19937 rng(1);
+    std::uniform_int_distribution<size_t> pick(0, free.size() - 1);
+    int fully = 0;
+    for (int q = 0; q < 150; ++q) {
+      const Cell a = free[pick(rng)], b = free[pick(rng)];
+      const WorldPlan p = planner.plan(f.origin_x + f.resolution * a.x, f.origin_y + f.resolution * a.y,
+                                       f.origin_x + f.resolution * b.x, f.origin_y + f.resolution * b.y);
+      ASSERT_TRUE(p.solved) << q;
+      const SmoothedPath sp = s.smooth(waypoint_poses(p.waypoints, f), std::numeric_limits<double>::quiet_NaN());
+      EXPECT_TRUE(all_cells_free(grid, f, sp.poses)) << q;
+      if (!sp.fully_smoothed) continue;
+      ++fully;
+      EXPECT_LE(sp.max_curvature, 1.0 / 0.15 * 1.005) << q;  // chords of 0.05 m on arcs of 0.15 m
+    }
+    EXPECT_GE(fully, 135);  // 90 %
+  }
 }
