@@ -204,13 +204,19 @@ bool CurvatureSmoother::curve(const Pose& a, const Pose& b, std::vector<Pose>& o
         static_cast<const ob::ReedsSheppStateSpace&>(*space_), a, b, h, dense, arc, joint);
   }
   if (!poses_free(dense)) return false;
-  out.clear();
-  double kept = 0.0;  // arc length at the last pose kept: none further than `step` apart
+  // output: the ends, the joints (cusps), and no two poses further than
+  // `step` apart; Dubins: none within 1 mm of an end (a heading turned there)
+  std::vector<size_t> cand;
   for (size_t i = 0; i < dense.size(); ++i) {
     const bool end = i == 0 || i + 1 == dense.size();
-    const bool dubins = options_.model == SmoothingOptions::Model::dubins;  // beside an end: a heading turned
-    if (dubins && !end && (arc[i] < 1e-3 || length - arc[i] < 1e-3)) continue;
-    if (end || joint[i] || arc[i + 1] - kept > options_.step + 1e-9) {
+    const bool beside = options_.model == SmoothingOptions::Model::dubins && (arc[i] < 1e-3 || length - arc[i] < 1e-3);
+    if (end || !beside) cand.push_back(i);
+  }
+  out.clear();
+  double kept = 0.0;  // arc length at the last pose kept
+  for (size_t k = 0; k < cand.size(); ++k) {
+    const size_t i = cand[k];
+    if (k == 0 || k + 1 == cand.size() || joint[i] || arc[cand[k + 1]] - kept > options_.step + 1e-9) {
       out.push_back(dense[i]);
       kept = arc[i];
     }
