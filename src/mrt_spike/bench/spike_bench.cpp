@@ -17,6 +17,7 @@
 #include "mrt_spike/scenario_run.h"
 #include "building_route.h"
 #include "msl_replan.h"
+#include "smoothing_bench.h"
 
 using namespace mrt::spike;
 namespace fs = std::filesystem;
@@ -175,6 +176,8 @@ struct MainArgs {
   std::vector<int> start, goal;
   int msl_steps = 0, msl_robots = 10;
   bool building = false;
+  std::string smoothing;  ///< --smoothing: dubins | reeds_shepp (then exit)
+  SmoothingBenchOptions smooth{"dubins", 0.3, MRT_WORLDS_DIR "/museum.yaml"};
 };
 
 // spike_plan's options (issue 16: "spike_bench with the same options"),
@@ -209,6 +212,15 @@ void add_options(CLI::App& app, MainArgs& m, BenchOptions& b) {
   app.add_option("--ompl", b.ompl, "also run OMPL's RRT* and PRM* on the first N queries of each map");
   app.add_option("--ompl-time", b.ompl_time, "OMPL time limit per query, s")->check(CLI::PositiveNumber);
   app.add_flag("--building", m.building, "the long route on an office floor (then exit)");
+  app.add_option("--smoothing", m.smoothing, "SPIKE's paths against their Dubins or Reeds-Shepp smoothing (then exit)")
+      ->check(CLI::IsMember({"dubins", "reeds_shepp"}));
+  app.add_option("--turning-radius", m.smooth.turning_radius, "--smoothing: minimum turning radius, m")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--world", m.smooth.world, "--smoothing: world or map_server YAML (default: mrt_world's museum)");
+  app.add_option("--world-resolution", m.smooth.resolution, "--smoothing: cell size for a world file, m")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--world-queries", m.smooth.queries, "--smoothing: random queries between free cells")
+      ->check(CLI::PositiveNumber);
 }
 
 void run_dir(const std::string& dir, const std::vector<int>& idx, const BenchOptions& b) {
@@ -236,6 +248,11 @@ int main(int argc, char** argv) {
   try {
     if (m.building) {
       bench_building();
+      return 0;
+    }
+    if (!m.smoothing.empty()) {
+      m.smooth.model = m.smoothing;
+      bench_smoothing(m.smooth);
       return 0;
     }
     if (m.msl_steps > 0) {

@@ -82,3 +82,22 @@ TEST(SpikeBenchCli, SpikePlansOptionsAndOutput) {
   EXPECT_EQ(without_times(dir + "b1.txt"), without_times(dir + "p1.txt"));
   EXPECT_NE(without_times(dir + "p1.txt").find("query 0 solved 1"), std::string::npos);
 }
+
+// --smoothing on the museum (the default world): SPIKE's paths and their
+// Dubins smoothing, the curvature within the bound 1/0.5 = 2 1/m (chords of
+// 5 cm on arcs of 0.5 m: 1.0004 times it); a bad model is a usage error.
+TEST(SpikeBenchCli, Smoothing) {
+  const Output b = mrt::common::testing::run(std::string("'") + SPIKE_BENCH +
+                                             "' --smoothing dubins --turning-radius 0.5 --world-queries 5");
+  ASSERT_EQ(b.code, 0) << b.text;
+  for (const char* line : {"museum.smoothing.solved: 5 count", "museum.unsmoothed.max_curvature: ",
+                           "museum.unsmoothed.mean_length: ", "museum.dubins.mean_length: ",
+                           "museum.dubins.curvature_bound: 2 1/m", "museum.dubins.median_time: ",
+                           "museum.dubins.smoothing_only.median_time: "})
+    EXPECT_NE(b.text.find(line), std::string::npos) << line << "\n" << b.text;
+  const size_t k = b.text.find("museum.dubins.max_curvature_fully_smoothed: ");
+  ASSERT_NE(k, std::string::npos);
+  EXPECT_LE(std::stod(b.text.substr(k + 44)), 2.0 * 1.001) << b.text;
+  EXPECT_EQ(err(SPIKE_BENCH, "--smoothing bezier").code, 2);
+  EXPECT_NE(help(SPIKE_BENCH).text.find("--turning-radius"), std::string::npos);
+}

@@ -7,6 +7,8 @@
 // ObstacleTracker's (obstacle_tracker.h). dynamic_reconfigure (cfg/Spike.cfg):
 // the inflation (rebuilds the planner), the horizon, the re-plan rate, the
 // spacing; one mutex serializes every callback with the reconfiguration.
+// ~smoothing (dubins | reeds_shepp): the published poses follow the core's
+// CurvatureSmoother's curves of ~turning_radius through the waypoints.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -30,6 +32,7 @@
 #include "mrt_common_ros/params.h"
 #include "mrt_common_ros/percept_conversions.h"
 #include "mrt_spike/SpikeConfig.h"
+#include "mrt_spike/curvature_smoother.h"
 #include "mrt_spike/obstacle_tracker.h"
 #include "mrt_spike/planner_factory.h"
 #include "mrt_spike/world_planner.h"
@@ -52,6 +55,8 @@ struct NodeOptions {
   bool use_world_model = false;  ///< also take the anchors of MAP's world model
   ObstacleTrackerOptions tracker;
   WorldPlannerOptions planner;
+  std::string smoothing = "none";  ///< none | dubins | reeds_shepp
+  SmoothingOptions smoothing_options;
 };
 
 class SpikeNode {
@@ -69,9 +74,10 @@ class SpikeNode {
     diag_.add("planner", this, &SpikeNode::diagnose);
     timer_ = nh.createTimer(ros::Duration(1.0 / o.replan_rate), &SpikeNode::on_timer, this);
     marker_pub_.publish(static_markers(planner_, o_.frame_id));
-    ROS_INFO("spike_node: map %s, %d x %d cells of %.3f m, planner %s, %zu quadtree leaves", o.map.c_str(),
-             planner_.map().grid.width(), planner_.map().grid.height(), planner_.map().frame.resolution,
-             o.planner.planner.c_str(), planner_.quadtree() ? planner_.quadtree()->leaves().size() : 0);
+    ROS_INFO("spike_node: map %s, %d x %d cells of %.3f m, planner %s, %zu quadtree leaves, smoothing %s",
+             o.map.c_str(), planner_.map().grid.width(), planner_.map().grid.height(),
+             planner_.map().frame.resolution, o.planner.planner.c_str(),
+             planner_.quadtree() ? planner_.quadtree()->leaves().size() : 0, o.smoothing.c_str());
     // last: the callbacks above may run once ros::spin() starts, the
     // reconfiguration from then on, starting from the validated parameters
     reconfigure_ = std::make_unique<dynamic_reconfigure::Server<SpikeConfig>>(reconfigure_mutex_, pnh);
@@ -119,7 +125,9 @@ class SpikeNode {
     if (!in_map(req.start, start, "start") || !in_map(req.goal, goal, "goal")) return true;  // an empty plan
     const auto& s = start.pose.position;
     const auto& g = goal.pose.position;
-    const WorldPlan p = timed_plan(s.x, s.y, g.x, g.y, std::max(0.0f, req.tolerance));
+    const double goal_yaw = mrt::ros_common::quaternion_to_yaw(goal.pose.orientation);
+    const WorldPlan p = timed_plan(s.x, s.y, g.x, g.y, std::max(0.0f, req.tolerance),
+                                   mrt::ros_common::quaternion_to_yaw(start.pose.orientation), goal_yaw);
     if (!p.solved) {
       ROS_WARN("make_plan: no path: %s; nearest reachable point (%.2f, %.2f)", p.reason.c_str(), p.nearest_x, p.nearest_y);
       return true;  // an empty plan, as navfn
@@ -127,14 +135,15 @@ class SpikeNode {
     if (p.goal_relaxed)
       ROS_INFO("make_plan: %s; planned to the nearest reachable point, within the tolerance %.2f m", p.reason.c_str(),
                req.tolerance);
-    res.plan = to_path(p, mrt::ros_common::quaternion_to_yaw(goal.pose.orientation));
+    res.plan = to_path(p, goal_yaw);
     return true;
   }
 
-  bool current_pose(double& x, double& y) {
+  bool current_pose(double& x, double& y, double& yaw) {
     try {
       const auto t = tf_.lookupTransform(o_.frame_id, o_.base_frame, ros::Time(0), ros::Duration(0.2));
       x = t.transform.translation.x, y = t.transform.translation.y;
+      yaw = mrt::ros_common::quaternion_to_yaw(t.transform.rotation);
       return true;
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5, "spike_node: no pose of %s in %s: %s", o_.base_frame.c_str(), o_.frame_id.c_str(), e.what());
@@ -143,17 +152,18 @@ class SpikeNode {
   }
 
   void replan(const char* why) {
-    double x = 0, y = 0;
-    if (!has_goal_ || !current_pose(x, y)) return;
+    double x = 0, y = 0, yaw = 0;
+    if (!has_goal_ || !current_pose(x, y, yaw)) return;
     const auto& g = goal_.pose.position;
-    plan_ = timed_plan(x, y, g.x, g.y);
+    const double goal_yaw = mrt::ros_common::quaternion_to_yaw(goal_.pose.orientation);
+    plan_ = timed_plan(x, y, g.x, g.y, 0.0, yaw, goal_yaw);
     ++replans_;
     if (!plan_.solved)
       ROS_WARN("spike_node (%s): no path: %s; nearest reachable point (%.2f, %.2f)", why, plan_.reason.c_str(),
                plan_.nearest_x, plan_.nearest_y);
     else
       ROS_INFO("spike_node (%s): plan of %.2f m, %zu poses", why, plan_.length, plan_.poses.size());
-    plan_pub_.publish(to_path(plan_, mrt::ros_common::quaternion_to_yaw(goal_.pose.orientation)));
+    plan_pub_.publish(to_path(plan_, goal_yaw));
   }
 
   void on_goal(const geometry_msgs::PoseStamped& g) {
@@ -175,10 +185,12 @@ class SpikeNode {
   SpikeConfig current_config() const;
   bool to_map(const std::string& frame, mrt::common::Pose2D& t);
 
-  // every plan goes through here: its time and its failure for the diagnostics
-  WorldPlan timed_plan(double x0, double y0, double x1, double y1, double tolerance = 0.0) {
+  // every plan goes through here: its time (smoothing included) and its
+  // failure for the diagnostics
+  WorldPlan timed_plan(double x0, double y0, double x1, double y1, double tolerance, double yaw0, double yaw1) {
     const auto t0 = std::chrono::steady_clock::now();
     WorldPlan p = planner_.plan(x0, y0, x1, y1, tolerance);
+    smooth(p, yaw0, yaw1);
     last_plan_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     max_plan_ms_ = std::max(max_plan_ms_, last_plan_ms_);
     ++plans_;
@@ -190,6 +202,32 @@ class SpikeNode {
     }
     last_solved_ = p.solved;
     return p;
+  }
+
+  // ~smoothing: the current grid (with the moving obstacles), poses every
+  // ~spacing (the resolution for 0)
+  CurvatureSmoother smoother() const {
+    SmoothingOptions so = o_.smoothing_options;
+    so.step = planner_.options().spacing > 0.0 ? planner_.options().spacing : planner_.map().frame.resolution;
+    return CurvatureSmoother(planner_.with_obstacles(), planner_.map().frame, so);
+  }
+
+  void smooth(WorldPlan& p, double yaw0, double yaw1) {
+    if (o_.smoothing_options.model == SmoothingOptions::Model::none || !p.solved) return;
+    const SmoothedPath s = smoother().smooth(waypoint_poses(p.waypoints, planner_.map().frame), yaw0,
+                                             std::isfinite(yaw1) ? std::optional<double>(yaw1) : std::nullopt);
+    p.poses = s.poses;
+    p.length = s.length;
+    if (s.fully_smoothed) return;
+    ++partial_smoothings_;
+    ROS_WARN_THROTTLE(5, "spike_node: %s smoothing partial: %d straight segments kept (no curve of %.2f m fits)",
+                      o_.smoothing.c_str(), s.kept_segments, o_.smoothing_options.turning_radius);
+  }
+
+  // the plan's straight segments and, when smoothed, its curves still free
+  bool still_valid(const WorldPlan& p) const {
+    if (!planner_.still_valid(p)) return false;
+    return o_.smoothing_options.model == SmoothingOptions::Model::none || smoother().poses_free(p.poses);
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
@@ -213,13 +251,15 @@ class SpikeNode {
     st.add("dropped messages", dropped_ + tracker_.dropped());
     mrt::ros_common::report(st, percept_drops_);
     st.add("world model", o_.use_world_model);
+    st.add("smoothing", o_.smoothing);
+    st.add("partial smoothings", partial_smoothings_);
   }
 
   void on_timer(const ros::TimerEvent&) {
     const std::lock_guard<std::mutex> lock(mutex_);
     tracker_.expire(ros::Time::now().toSec());
     if (tracker_.take_changed()) marker_pub_.publish(obstacle_markers(planner_, o_.frame_id));
-    if (has_goal_ && plan_.solved && !planner_.still_valid(plan_)) replan("plan blocked");
+    if (has_goal_ && plan_.solved && !still_valid(plan_)) replan("plan blocked");
     diag_.update();
   }
 
@@ -239,7 +279,7 @@ class SpikeNode {
   WorldPlan plan_;
   mrt::common::PerceptDrops percept_drops_;  ///< objects the ontology refused
   int replans_ = 0;
-  int plans_ = 0, failures_ = 0;
+  int plans_ = 0, failures_ = 0, partial_smoothings_ = 0;
   size_t dropped_ = 0;  ///< percepts and models in a frame not in tf
   bool last_solved_ = true;
   double last_plan_ms_ = 0.0, max_plan_ms_ = 0.0;
@@ -352,11 +392,18 @@ NodeOptions read_options(ros::NodeHandle& pnh) {
       .get_non_negative("anchor_sigmas", o.tracker.anchor_sigmas)
       .get("frame_id", o.frame_id)
       .get("base_frame", o.base_frame)
-      .get("planner", w.planner);
+      .get("planner", w.planner)
+      .get("smoothing", o.smoothing)
+      .get_positive("turning_radius", o.smoothing_options.turning_radius);
   try {  // at start-up, before the map is loaded
     check_dynamic_planner(w.planner);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("~planner: " + std::string(e.what()));
+  }
+  try {
+    o.smoothing_options.model = smoothing_model(o.smoothing);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error("~smoothing: " + std::string(e.what()));
   }
   return o;
 }
