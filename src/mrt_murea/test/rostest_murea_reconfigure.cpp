@@ -148,6 +148,35 @@ class Fixture {
   ros::Publisher initial_pub_;
 };
 
+// 2. the timeout: 1 us cuts the global searches short, 0.1 s lets the
+// tracked ones complete.
+void check_timeout(Fixture& f) {
+  Recorder& rec = f.rec;
+  const dynamic_reconfigure::Config applied =
+      set({{"accuracy_xy", 0.04}, {"accuracy_theta", M_PI / 180}, {"timeout", 1e-6}});
+  EXPECT_DOUBLE_EQ(value_of(applied, "timeout"), 1e-6);
+  std_srvs::Empty global;
+  EXPECT_TRUE(ros::service::call("global_localization", global));
+  rec.diags.clear();
+  EXPECT_TRUE(f.scan_until(
+      [&] {
+        return !rec.diags.empty() && number(rec.diags.back(), "timeout s") == 1e-6 &&
+               rec.diags.back().count("complete") && rec.diags.back().at("complete") == "False";
+      },
+      20.0))
+      << "the global searches were never cut short with a 1 us timeout";
+  set({{"timeout", 0.1}});
+  f.reset_pose();
+  rec.diags.clear();
+  EXPECT_TRUE(f.scan_until(
+      [&] {
+        return !rec.diags.empty() && number(rec.diags.back(), "timeout s") == 0.1 &&
+               rec.diags.back().count("complete") && rec.diags.back().at("complete") == "True";
+      },
+      20.0))
+      << "the searches stayed incomplete with the 0.1 s timeout back";
+}
+
 }  // namespace
 
 TEST(MureaReconfigure, SearchParametersChangeWhatTheNodePublishes) {
@@ -189,30 +218,7 @@ TEST(MureaReconfigure, SearchParametersChangeWhatTheNodePublishes) {
   EXPECT_LT(median(cells_coarse), median(cells_fine) / 2);
   EXPECT_GT(rec.cloud_sizes.size(), clouds_fine);
 
-  // 2. the timeout: 1 us cuts the global searches short, 0.1 s lets the
-  // tracked ones complete
-  applied = set({{"accuracy_xy", 0.04}, {"accuracy_theta", M_PI / 180}, {"timeout", 1e-6}});
-  EXPECT_DOUBLE_EQ(value_of(applied, "timeout"), 1e-6);
-  std_srvs::Empty global;
-  EXPECT_TRUE(ros::service::call("global_localization", global));
-  rec.diags.clear();
-  EXPECT_TRUE(f.scan_until(
-      [&] {
-        return !rec.diags.empty() && number(rec.diags.back(), "timeout s") == 1e-6 &&
-               rec.diags.back().count("complete") && rec.diags.back().at("complete") == "False";
-      },
-      20.0))
-      << "the global searches were never cut short with a 1 us timeout";
-  set({{"timeout", 0.1}});
-  f.reset_pose();
-  rec.diags.clear();
-  EXPECT_TRUE(f.scan_until(
-      [&] {
-        return !rec.diags.empty() && number(rec.diags.back(), "timeout s") == 0.1 &&
-               rec.diags.back().count("complete") && rec.diags.back().at("complete") == "True";
-      },
-      20.0))
-      << "the searches stayed incomplete with the 0.1 s timeout back";
+  check_timeout(f);
 
   // 3. the walls' tolerance: the plateau (particlecloud) widens
   rec.cloud_sizes.clear();
