@@ -71,6 +71,11 @@ void Tracker::predict(const Pose2D& delta, const Covariance3& q) {
   }
 }
 
+void Tracker::set_search_options(const SearchOptions& search) {
+  Localizer check(map_, search);  // throws before anything changes
+  opt_.search = search;
+}
+
 void Tracker::set_pose(const Pose2D& pose, const Covariance3& covariance) {
   pose_ = pose;
   cov_ = covariance;

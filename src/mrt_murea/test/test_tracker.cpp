@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "mrt_common/angle.h"
 #include "mrt_murea/tracker.h"
@@ -372,6 +373,38 @@ TEST(Tracker, RefinedTrackingIsExact) {
     EXPECT_GT(r.covariance[0], 0.0);
     EXPECT_LT(r.covariance[0], 0.01 * 0.01);
   }
+}
+
+// New search options while tracking (murea_node's dynamic_reconfigure):
+// the next update searches the coarser lattice, the pose is kept; options
+// the Localizer refuses throw and change nothing.
+TEST(Tracker, SetSearchOptionsBetweenUpdates) {
+  const mrt::sim::World w = field();
+  const FeatureMap map(w);
+  Tracker t(map, TrackerOptions{});
+  const Pose2D truth(-4, -2, 2.5);
+  const std::vector<Percept> ps = percepts_at(w, truth);
+  const TrackResult fine = t.update(ps);  // global
+  const TrackResult tracked = t.update(ps);
+  ASSERT_EQ(tracked.mode, TrackMode::Tracking);
+  SearchOptions s = t.options().search;
+  s.accuracy_xy = 0.2;
+  s.accuracy_theta = 0.1;
+  s.tolerance[static_cast<int>(FeatureClass::Line)] = {0.1, 0.05};
+  t.set_search_options(s);
+  EXPECT_DOUBLE_EQ(t.options().search.accuracy_xy, 0.2);
+  EXPECT_TRUE(t.tracking());
+  const TrackResult coarse = t.update(ps);
+  EXPECT_EQ(coarse.mode, TrackMode::Tracking);
+  EXPECT_LT(coarse.search.cells, tracked.search.cells);
+  expect_near(coarse.pose, truth);
+  s.accuracy_xy = -1.0;
+  EXPECT_THROW(t.set_search_options(s), std::invalid_argument);
+  s.accuracy_xy = 0.2;
+  s.tolerance[0].base = -0.1;
+  EXPECT_THROW(t.set_search_options(s), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(t.options().search.tolerance[0].base, 0.1);  // unchanged by the refused ones
+  expect_near(fine.pose, truth);
 }
 
 // refine() alone: from a start 3 cm, -2 cm and 1 degree off the truth the

@@ -100,6 +100,11 @@ class Tracker {
   void set_pose(const Pose2D& pose, const Covariance3& covariance);
   /// Forgets the pose and the prior: the next update searches globally.
   void reset();
+  /// New search options (lattice, timeout, tolerances) from the next
+  /// update on; the pose, the prior and the modes are kept. Throws
+  /// std::invalid_argument (the options unchanged) when the Localizer
+  /// refuses them on this map. Not thread-safe: call between updates.
+  void set_search_options(const SearchOptions& search);
 
   bool tracking() const { return tracking_; }
   /// Tracking from a confirmed fix (TrackerOptions::settle_frames).

@@ -6,7 +6,11 @@
 // particlecloud, tf map -> odom, evidence markers and diagnostics out;
 // initialpose, global_localization, request_nomotion_update, set_map and
 // relocalize. The node is wiring: all the work is the core's Tracker.
+// dynamic_reconfigure (cfg/Murea.cfg): the search's accuracy, timeout and
+// tolerances, from the next frame. The node spins one thread (ros::spin):
+// the reconfiguration runs between frames, as every other callback.
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -33,6 +37,7 @@
 #include "mrt_common_ros/percept_conversions.h"
 #include "mrt_common_ros/conversions.h"
 #include "mrt_common_ros/params.h"
+#include "mrt_murea/MureaConfig.h"
 #include "mrt_world/occupancy_map.h"
 #include "mrt_world/ros/occupancy_grid.h"
 #include "ros/markers.h"
@@ -42,10 +47,42 @@ namespace mrt::murea::node {
 namespace {
 
 namespace rc = mrt::ros_common;
+using mrt_murea::MureaConfig;
+
+// The reconfigurable values of search options, and back (tolerances as
+// ~tolerance_<class>'s [base, per_metre], by class).
+MureaConfig to_config(const SearchOptions& s) {
+  MureaConfig c = MureaConfig::__getDefault__();
+  c.accuracy_xy = s.accuracy_xy;
+  c.accuracy_theta = s.accuracy_theta;
+  c.timeout = s.timeout;
+  c.timeout_cpu = s.timeout_cpu;
+  double* t[kFeatureClassCount][2] = {{&c.tolerance_line_base, &c.tolerance_line_per_metre},
+                                      {&c.tolerance_goal_base, &c.tolerance_goal_per_metre},
+                                      {&c.tolerance_goalpost_base, &c.tolerance_goalpost_per_metre},
+                                      {&c.tolerance_landmark_base, &c.tolerance_landmark_per_metre},
+                                      {&c.tolerance_wall_base, &c.tolerance_wall_per_metre}};
+  for (int k = 0; k < kFeatureClassCount; ++k) *t[k][0] = s.tolerance[k].base, *t[k][1] = s.tolerance[k].per_metre;
+  return c;
+}
+
+SearchOptions from_config(SearchOptions s, const MureaConfig& c) {
+  s.accuracy_xy = c.accuracy_xy;
+  s.accuracy_theta = c.accuracy_theta;
+  s.timeout = c.timeout;
+  s.timeout_cpu = c.timeout_cpu;
+  const double t[kFeatureClassCount][2] = {{c.tolerance_line_base, c.tolerance_line_per_metre},
+                                           {c.tolerance_goal_base, c.tolerance_goal_per_metre},
+                                           {c.tolerance_goalpost_base, c.tolerance_goalpost_per_metre},
+                                           {c.tolerance_landmark_base, c.tolerance_landmark_per_metre},
+                                           {c.tolerance_wall_base, c.tolerance_wall_per_metre}};
+  for (int k = 0; k < kFeatureClassCount; ++k) s.tolerance[k] = {t[k][0], t[k][1]};
+  return s;
+}
 
 class MureaNode {
  public:
-  MureaNode(ros::NodeHandle& nh, const ros::NodeHandle& pnh)
+  MureaNode(ros::NodeHandle& nh, ros::NodeHandle& pnh)
       : opt_(read_options(pnh)),
         odom_frame_(opt_.frame_prefix + opt_.odom_frame),
         base_frame_(opt_.frame_prefix + opt_.base_frame),
@@ -82,9 +119,34 @@ class MureaNode {
              opt_.tracker.search.accuracy_theta * 180 / M_PI, opt_.tracker.search.timeout,
              opt_.odom_topic.empty() ? "tf" : opt_.odom_topic.c_str(), opt_.map_frame.c_str(), odom_frame_.c_str(),
              base_frame_.c_str());
+    // last: the reconfiguration starts from the validated parameters
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<MureaConfig>>(reconfigure_mutex_, pnh);
+    reconfigure_->updateConfig(to_config(opt_.tracker.search));
+    reconfigure_->setCallback([this](MureaConfig& c, uint32_t) { on_reconfigure(c); });
   }
 
  private:
+  // New search options for the tracker (from its next frame) and for the
+  // trackers of later maps; values the tracker refuses on its map are
+  // logged and `c` gets the current ones back. Without a map yet, the
+  // cfg's ranges are the check (the tracker of the map checks them again).
+  void on_reconfigure(MureaConfig& c) {
+    const SearchOptions s = from_config(opt_.tracker.search, c);
+    try {
+      if (tracker_) tracker_->set_search_options(s);
+      opt_.tracker.search = s;
+      ROS_INFO("murea: reconfigured: %.3f m / %.2f deg, timeout %.3f s (%s), tolerance line [%.3f, %.3f], goal "
+               "[%.3f, %.3f], goalpost [%.3f, %.3f], landmark [%.3f, %.3f], wall [%.3f, %.3f]",
+               s.accuracy_xy, s.accuracy_theta * 180 / M_PI, s.timeout, s.timeout_cpu ? "CPU" : "wall-clock",
+               s.tolerance[0].base, s.tolerance[0].per_metre, s.tolerance[1].base, s.tolerance[1].per_metre,
+               s.tolerance[2].base, s.tolerance[2].per_metre, s.tolerance[3].base, s.tolerance[3].per_metre,
+               s.tolerance[4].base, s.tolerance[4].per_metre);
+    } catch (const std::invalid_argument& e) {
+      ROS_WARN("murea: reconfiguration refused: %s", e.what());
+    }
+    c = to_config(opt_.tracker.search);
+  }
+
   // A new map (at start, from the topic, from set_map): a new tracker on
   // it, tracking from the pending pose (the parameters' or set_map's) when
   // there is one, else searching globally.
@@ -366,6 +428,11 @@ class MureaNode {
     s.add("frames before the map", before_map_);
     s.add("no-motion updates", nomotion_);
     s.add("last update ms", last_ms_);
+    const SearchOptions& so = tracker_ ? tracker_->options().search : opt_.tracker.search;  // the options in use
+    s.add("accuracy xy m", so.accuracy_xy);
+    s.add("accuracy theta rad", so.accuracy_theta);
+    s.add("timeout s", so.timeout);
+    s.add("tolerance wall base m", so.tolerance[static_cast<int>(FeatureClass::Wall)].base);
     if (!tracked_ms_.empty()) {  // over the last 1000 tracked frames
       std::vector<double> v = tracked_ms_;
       std::sort(v.begin(), v.end());
@@ -379,6 +446,7 @@ class MureaNode {
       s.add("ambiguous", last_->search.ambiguous);
       s.add("complete", last_->search.complete);
       s.add("modes carried", last_->modes);
+      s.add("last search cells", last_->search.cells);
     }
     s.add("ambiguities resolved by the prior", resolved_);
   }
@@ -408,6 +476,8 @@ class MureaNode {
   std::size_t frames_ = 0, dropped_frame_ = 0, no_odom_ = 0, resolved_ = 0, before_map_ = 0, nomotion_ = 0, last_beams_ = 0;
   double last_ms_ = 0.0;
   std::vector<double> tracked_ms_;
+  boost::recursive_mutex reconfigure_mutex_;  // the server's own, held around on_reconfigure
+  std::unique_ptr<dynamic_reconfigure::Server<MureaConfig>> reconfigure_;
 };
 
 }  // namespace
