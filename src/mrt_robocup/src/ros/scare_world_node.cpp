@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
       st.add("BallOwned (last)", last_owned);
     });
     diag.input("world_model", 1.0);  // MAP's model, ~rate 30 Hz
+    diag.count("crisp arrays published", 0);
+    diag.count("anchors skipped (non-finite)", 0);
     ros::Publisher pub = nh.advertise<mrt_msgs::CrispDataArray>("world_crisp", 5);
     ros::Subscriber sub = nh.subscribe<mrt_msgs::WorldModel>("world_model", 5, [&](const mrt_msgs::WorldModel::ConstPtr& m) {
       diag.received("world_model");

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
     for (const std::string& r : names) {
       robots[r];
       diag.input(r + " pose", 2.0);
+      diag.count(r + " job messages", 0);
       subs.push_back(nh.subscribe<std_msgs::String>("/" + r + "/scare/job", 5, [&robots, &diag, r](const std_msgs::String::ConstPtr& m) {
         diag.count(r + " job messages");
         robots[r].job = m->data;

@@ -27,6 +27,8 @@ class RemoteInput {
   RemoteInput(ros::NodeHandle& nh, double timeout, mrt::ros_common::NodeDiagnostics& diag)
       : timeout_(timeout), diag_(diag) {
     sub_ = nh.subscribe("remote_cmd", 10, &RemoteInput::on_remote, this);
+    diag_.count("remote commands", 0);  // shown from the start
+    diag_.count("remote commands dropped (non-finite)", 0);
   }
   std::optional<RemoteCommand> fresh(const ros::Time& now) const {
     if (remote_ && (now - time_).toSec() < timeout_) return remote_;

@@ -61,6 +61,8 @@ SequencerNode::SequencerNode(ros::NodeHandle& nh, const SequencerNodeOptions& o,
       hook_(std::move(hook)),
       diag_(nh, "sequencer", "scare", [this](diagnostic_updater::DiagnosticStatusWrapper& st) { diagnose(st); }) {
   diag_.input("pose", pose_timeout_ > 0 ? pose_timeout_ : 2.0);
+  for (const char* c : {"path messages", "mode messages", "job messages", "world_crisp messages"})
+    diag_.count(c, 0);  // shown from the start
   seq_.set_mode(o.mode, ros::Time::now().toSec());
   status_pub_ = nh.advertise<mrt_msgs::TaskStatus>("task_status", 50);
   replan_pub_ = nh.advertise<mrt_msgs::PlanRequest>("replan_request", 5);
