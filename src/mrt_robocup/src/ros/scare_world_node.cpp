@@ -6,7 +6,9 @@
 // `world_model` (mrt_msgs/WorldModel), publishing `world_crisp`
 // (mrt_msgs/CrispDataArray) for scare_coordinator at every model. BallOwned:
 // the ball within ~own_reach of the robot's own pose or of a Teammate
-// anchor (a teammate's kicker holds it). The bringup's node: README "The
+// anchor (a teammate's kicker holds it). Diagnostics "SCARE world data":
+// world_model expected every second, the arrays published, the anchors
+// skipped (non-finite), the last BallOwned. The bringup's node: README "The
 // RoboCup bringup".
 #include <mrt_msgs/CrispDataArray.h>
 #include <mrt_msgs/WorldModel.h>
@@ -14,6 +16,7 @@
 
 #include <cmath>
 
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_robocup/team_crisp.h"
 
@@ -24,12 +27,24 @@ int main(int argc, char** argv) {
     double reach = 0.25 + 0.11 + 0.08;  // body + ball + the Player's 8 cm (README "Crisp data")
     mrt::ros_common::ParamReader(pnh).get_positive("own_reach", reach);
     const mrt::robocup::SituationOptions situation;
+    bool last_owned = false;
+    mrt::ros_common::NodeDiagnostics diag(nh, "SCARE world data", "scare", [&](auto& st) {
+      st.add("own reach (m)", reach);
+      st.add("BallOwned (last)", last_owned);
+    });
+    diag.input("world_model", 1.0);  // MAP's model, ~rate 30 Hz
+    diag.count("crisp arrays published", 0);
+    diag.count("anchors skipped (non-finite)", 0);
     ros::Publisher pub = nh.advertise<mrt_msgs::CrispDataArray>("world_crisp", 5);
     ros::Subscriber sub = nh.subscribe<mrt_msgs::WorldModel>("world_model", 5, [&](const mrt_msgs::WorldModel::ConstPtr& m) {
+      diag.received("world_model");
       std::vector<mrt::robocup::AnchorView> anchors;
-      for (const mrt_msgs::Anchor& a : m->anchors)
+      for (const mrt_msgs::Anchor& a : m->anchors) {
         if (std::isfinite(a.x) && std::isfinite(a.y))
           anchors.push_back({a.membership_class, a.x, a.y, a.vx, a.vy, a.reliability});
+        else
+          diag.count("anchors skipped (non-finite)");
+      }
       bool owns = false;
       for (const auto& b : anchors) {
         if (b.membership_class != "Ball") continue;
@@ -47,6 +62,8 @@ int main(int argc, char** argv) {
         out.data.push_back(d);
       }
       pub.publish(out);
+      last_owned = owns;
+      diag.count("crisp arrays published");
     });
     ros::spin();
     return 0;

@@ -5,6 +5,9 @@
 // publishes `team_markers` (visualization_msgs/MarkerArray, ~frame) at
 // ~rate Hz: a text "robotN: Job / role" above the estimated pose and a disc
 // under it in the job's colour (grey while waiting). rviz: robocup.rviz.
+// Diagnostics "team markers": each robot's pose expected every 2 s (MUREA),
+// its job messages (on change only: counted, no timeout), the arrays
+// published.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
@@ -14,6 +17,7 @@
 #include <functional>
 #include <map>
 
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 
 namespace {
@@ -45,13 +49,21 @@ int main(int argc, char** argv) {
     mrt::ros_common::ParamReader(pnh).get("robots", names).get("frame", frame).get_positive("rate", rate);
     std::map<std::string, Robot> robots;
     std::vector<ros::Subscriber> subs;
+    mrt::ros_common::NodeDiagnostics diag(nh, "team markers", "none", [&](auto& st) {
+      st.add("robots", names.size());
+      st.add("frame", frame);
+    });
     for (const std::string& r : names) {
       robots[r];
-      subs.push_back(nh.subscribe<std_msgs::String>("/" + r + "/scare/job", 5, [&robots, r](const std_msgs::String::ConstPtr& m) {
+      diag.input(r + " pose", 2.0);
+      diag.count(r + " job messages", 0);
+      subs.push_back(nh.subscribe<std_msgs::String>("/" + r + "/scare/job", 5, [&robots, &diag, r](const std_msgs::String::ConstPtr& m) {
+        diag.count(r + " job messages");
         robots[r].job = m->data;
       }));
       subs.push_back(nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
-          "/" + r + "/pose", 5, [&robots, r](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+          "/" + r + "/pose", 5, [&robots, &diag, r](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+            diag.received(r + " pose");
             robots[r].have_pose = true;
             robots[r].x = m->pose.pose.position.x;
             robots[r].y = m->pose.pose.position.y;
@@ -97,6 +109,7 @@ int main(int argc, char** argv) {
         out.markers.push_back(disc);
       }
       pub.publish(out);
+      diag.count("marker arrays published");
     });
     ros::spin();
     return 0;

@@ -55,7 +55,14 @@ SequencerNodeOptions SequencerNodeOptions::read(ros_common::ParamReader& p) {
 }
 
 SequencerNode::SequencerNode(ros::NodeHandle& nh, const SequencerNodeOptions& o, CycleHook hook)
-    : seq_(load_sequencer_options(o.tasks)), pose_timeout_(o.pose_timeout), frame_(o.frame), hook_(std::move(hook)) {
+    : seq_(load_sequencer_options(o.tasks)),
+      pose_timeout_(o.pose_timeout),
+      frame_(o.frame),
+      hook_(std::move(hook)),
+      diag_(nh, "sequencer", "scare", [this](diagnostic_updater::DiagnosticStatusWrapper& st) { diagnose(st); }) {
+  diag_.input("pose", pose_timeout_ > 0 ? pose_timeout_ : 2.0);
+  for (const char* c : {"path messages", "mode messages", "job messages", "world_crisp messages"})
+    diag_.count(c, 0);  // shown from the start
   seq_.set_mode(o.mode, ros::Time::now().toSec());
   status_pub_ = nh.advertise<mrt_msgs::TaskStatus>("task_status", 50);
   replan_pub_ = nh.advertise<mrt_msgs::PlanRequest>("replan_request", 5);
@@ -67,11 +74,10 @@ SequencerNode::SequencerNode(ros::NodeHandle& nh, const SequencerNodeOptions& o,
   job_sub_ = nh.subscribe("scare/job", 5, &SequencerNode::on_job, this);
   world_sub_ = nh.subscribe("world_crisp", 5, &SequencerNode::on_world, this);
   timer_ = nh.createTimer(ros::Duration(1.0 / o.rate), &SequencerNode::on_timer, this);
-  diag_.setHardwareID("scare");
-  diag_.add("sequencer", this, &SequencerNode::diagnose);
 }
 
 void SequencerNode::on_path(const nav_msgs::Path& p) {
+  diag_.count("path messages");
   pending_.clear();
   for (const auto& ps : p.poses) {
     if (!std::isfinite(ps.pose.position.x) || !std::isfinite(ps.pose.position.y)) {
@@ -92,6 +98,7 @@ void SequencerNode::apply_plan() {
 }
 
 void SequencerNode::on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
+  diag_.received("pose");
   const Pose2D p = ros_common::to_pose2d(m.pose.pose);
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.theta)) {
     ++dropped_;
@@ -105,6 +112,7 @@ void SequencerNode::on_pose(const geometry_msgs::PoseWithCovarianceStamped& m) {
 }
 
 void SequencerNode::on_job(const std_msgs::String& j) {
+  diag_.count("job messages");
   if (j.data == seq_.job() && !have_pending_job_ && seq_.state() == SequencerState::kRunning) return;
   // "" (no job, or waiting) stops a job, never a plan from the planner.
   if (j.data.empty() && seq_.job().empty() && !have_pending_job_) return;
@@ -125,6 +133,7 @@ void SequencerNode::apply_job() {
 }
 
 void SequencerNode::on_world(const mrt_msgs::CrispDataArray& w) {
+  diag_.count("world_crisp messages");
   CrispMap world;
   for (const auto& d : w.data) {
     if (d.name.empty() || !std::isfinite(d.value) || !std::isfinite(d.reliability) || d.reliability < 0.0 ||
@@ -139,6 +148,7 @@ void SequencerNode::on_world(const mrt_msgs::CrispDataArray& w) {
 }
 
 void SequencerNode::on_mode(const std_msgs::String& m) {
+  diag_.count("mode messages");
   const std::optional<Mode> mode = parse_mode(m.data);
   if (!mode) {
     ++dropped_;
@@ -155,7 +165,6 @@ void SequencerNode::on_timer(const ros::TimerEvent&) {
   if (pose_fresh) handle(seq_.update(now.toSec(), *pose_));
   if (hook_) hook_(now, seq_, pose_fresh ? pose_ : std::nullopt);
   if (++ticks_ % 5 == 0) publish_status("");
-  diag_.update();
 }
 
 void SequencerNode::handle(const std::vector<SequencerEvent>& events) {
@@ -234,8 +243,13 @@ void SequencerNode::publish_status(const std::string& event, const SequencerEven
 
 void SequencerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st) {
   const bool bad = seq_.state() == SequencerState::kGaveUp || !pose_;
-  st.summary(bad ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK,
-             !pose_ ? "no pose yet" : to_string(seq_.state()));
+  // After NodeDiagnostics' summary: the state when that is OK; a silent
+  // pose (WARN) stays and gets the state's warning appended.
+  const std::string what = !pose_ ? "no pose yet" : to_string(seq_.state());
+  if (st.level == diagnostic_msgs::DiagnosticStatus::OK)
+    st.summary(bad ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK, what);
+  else if (bad)
+    st.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, what);
   st.add("mode", to_string(seq_.mode()));
   st.add("job", seq_.job());
   st.add("plans", seq_.plans());

@@ -2,11 +2,14 @@
 // geometry_msgs/Twist on `cmd_vel`: a full counter-clockwise circle of
 // ~radius at ~speed, then a full clockwise one, tangent at the start point.
 // Runs on ROS time, so under /use_sim_time it follows the simulator's clock.
+// Diagnostics "figure eight": no input (it only commands), the commands
+// published and the circles driven, the current circle's direction.
 #include <cmath>
 
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 
 namespace {
@@ -46,15 +49,24 @@ int run(const Options& o) {
   const ros::Time start = ros::Time::now();
   const double loop = kTwoPi * radius / speed;  // time of one circle, s
   ROS_INFO("figure eight: speed %.2f m/s, radius %.2f m, %.1f s per loop", speed, radius, loop);
+  bool first_circle = true;
+  double t = 0.0;
+  mrt::ros_common::NodeDiagnostics diag(nh, "figure eight", "simulation", [&](auto& st) {
+    st.add("speed (m/s)", speed);
+    st.add("radius (m)", radius);
+    st.add("circles driven", static_cast<long>(t / loop));
+    st.add("circle", first_circle ? "counter-clockwise" : "clockwise");
+  });
 
   ros::Rate r(rate);
   while (ros::ok()) {
-    const double t = (ros::Time::now() - start).toSec();
-    const bool first_circle = std::fmod(t, 2.0 * loop) < loop;
+    t = (ros::Time::now() - start).toSec();
+    first_circle = std::fmod(t, 2.0 * loop) < loop;
     geometry_msgs::Twist cmd;
     cmd.linear.x = speed;
     cmd.angular.z = (first_circle ? 1.0 : -1.0) * speed / radius;
     pub.publish(cmd);
+    diag.count("commands published");
     ros::spinOnce();
     r.sleep();
   }

@@ -2,10 +2,12 @@
 // header of the package). Plans and poses in; task status, re-plan requests
 // and the active path point out. An application adds what its behaviours
 // need from the sequencer (Roby: the goal as Mr. BRIAN crisp data) through
-// the cycle hook, in the same node and cycle.
+// the cycle hook, in the same node and cycle. Diagnostics "sequencer"
+// (mrt_common_ros's NodeDiagnostics): the pose expected within
+// ~pose_timeout (2 s when 0), the messages of the sporadic inputs counted;
+// an application adds its own through diagnostics().
 #pragma once
 
-#include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <mrt_msgs/CrispDataArray.h>
@@ -20,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "mrt_common_ros/node_diagnostics.h"
 #include "mrt_common_ros/params.h"
 #include "mrt_scare/sequencer.h"
 
@@ -50,6 +53,9 @@ class SequencerNode {
   /// Loads the task file (throws common::ParseError) and starts the topics.
   SequencerNode(ros::NodeHandle& nh, const SequencerNodeOptions& o, CycleHook hook = {});
 
+  /// The node's diagnostics, for an application's own inputs and counters.
+  ros_common::NodeDiagnostics& diagnostics() { return diag_; }
+
  private:
   void on_path(const nav_msgs::Path& p);
   void apply_plan();
@@ -79,7 +85,7 @@ class SequencerNode {
   ros::Publisher status_pub_, replan_pub_, goal_pub_, hand_back_pub_;
   ros::Subscriber path_sub_, pose_sub_, mode_sub_, job_sub_, world_sub_;
   ros::Timer timer_;
-  diagnostic_updater::Updater diag_;
+  ros_common::NodeDiagnostics diag_;
 };
 
 }  // namespace mrt::scare
