@@ -8,7 +8,11 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "mrt_common_ros/rostest_helpers.h"
 
@@ -37,6 +41,21 @@ TEST(WorldNode, PublishesTheLatchedMap) {
   EXPECT_EQ(srv.response.map.info.width, 20u);
   EXPECT_EQ(srv.response.map.header.frame_id, "map");
   EXPECT_EQ(srv.response.map.data, map.data);
+}
+
+// A node that stops on bad input says why (run_node's ROS_FATAL: its
+// NodeHandles' shutdown used to silence it) and exits 1.
+TEST(WorldNode, BadMapFileIsNamedOnStderr) {
+  const std::string cmd = std::string(WORLD_NODE) + " __name:=bad_world _map:=/nonexistent/museum.yaml 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[256];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  const int status = pclose(p);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  EXPECT_NE(out.find("[FATAL]"), std::string::npos) << out;
+  EXPECT_NE(out.find("/nonexistent/museum.yaml"), std::string::npos) << out;
 }
 
 int main(int argc, char** argv) {

@@ -85,6 +85,10 @@ class ParamReader {
 /// configuration file that does not parse, ...).
 template <class Body>
 int run_node(Body&& body) {
+  // The node's NodeHandles die with the body when it throws, and the last
+  // one to go shuts the node down, rosconsole with it: this one outlives
+  // them, so that ROS_FATAL still prints.
+  const ros::NodeHandle keep_alive;
   try {
     return std::forward<Body>(body)();
   } catch (const std::exception& e) {
