@@ -106,8 +106,9 @@ TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
   // One measurement: the wheel brought to speed (0.3 s of wall time, tau
   // 20 ms), then its ticks over 2 s of source time; max_gap over both.
   // Repeated (3 times at most) while the test thread was starved beyond
-  // 80 % of the watchdog: the wheel then stopped in between, and the count
-  // says nothing.
+  // 80 % of the watchdog, or the watchdog tripped: the wheel then stopped
+  // in between, and the count says nothing. A firmware whose watchdog
+  // trips on time-kept commands trips in all 3 and fails.
   const double starved = 0.8 * c.watchdog_ms / 1000.0;
   double start = 0.0, end = 0.0;
   int32_t first = 0, last = 0;
@@ -127,7 +128,10 @@ TEST(PtyEmulator, BoardTimeFollowsItsTimeSource) {
       last = command(&end);
     }
     trips = emu.firmware().watchdog_trips() - trips0;
-    if (max_gap < starved) break;
+    // A trip with the sender on time is the emulator's thread starved (it
+    // read the commands late: seen once under ASan beside the other lane,
+    // 73 ms between sends, one trip): measured again too.
+    if (max_gap < starved && trips == 0) break;
     std::printf("test thread starved: %.3f s of board time between two commands (watchdog %u ms), %u trips\n",
                 max_gap, c.watchdog_ms, trips);
   }
